@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/LU>
+
 #include "fowtsim/core/error.hpp"
 
 namespace fowtsim {
