@@ -20,16 +20,16 @@ FrameMotion interpolate(const FrameMotion& a, const FrameMotion& b, double s) {
   return m;
 }
 
-void RootLoadAverager::add(const RootLoads& loads) {
-  sum_.force_N += loads.force_N;
-  sum_.moment_N_m += loads.moment_N_m;
-  sum_.point_m += loads.point_m;
-  ++count_;
+void RootLoadAverager::add(const RootLoads& loads, double weight) {
+  sum_.force_N += weight * loads.force_N;
+  sum_.moment_N_m += weight * loads.moment_N_m;
+  sum_.point_m += weight * loads.point_m;
+  weight_ += weight;
 }
 
 RootLoads RootLoadAverager::average() const {
-  if (count_ == 0) throw std::logic_error("RootLoadAverager::average() with no samples");
-  const double w = 1.0 / count_;
+  if (!(weight_ > 0.0)) throw std::logic_error("RootLoadAverager::average() with no samples");
+  const double w = 1.0 / weight_;
   return {w * sum_.force_N, w * sum_.moment_N_m, w * sum_.point_m};
 }
 

@@ -28,5 +28,10 @@ TEST_CASE("root load averager returns the mean force, moment and point", "[unit]
   CHECK(m.moment_N_m.z() == 3.0);
   CHECK(m.point_m.z() == 11.0);
   avg.reset();
-  CHECK(avg.count() == 0);
+  CHECK(avg.total_weight() == 0.0);
+  // Trapezoidal weights: samples 0, 2, 4 of a linear ramp average to its mean, 2.
+  avg.add({{0, 0, 0}, {}, {}}, 0.5);
+  avg.add({{2, 0, 0}, {}, {}}, 1.0);
+  avg.add({{4, 0, 0}, {}, {}}, 0.5);
+  CHECK(avg.average().force_N.x() == 2.0);
 }

@@ -28,18 +28,20 @@ struct RootLoads {
   Vec3 point_m = Vec3::Zero();      // application point (root position), in g [m]
 };
 
-// Running average of root loads over the small steps of one large step (seed 000 §4.4.2:
-// "averaged over each large time-step to apply at the averaged root positions").
+// Weighted running average of root loads over the small steps of one large step (seed 000
+// §4.4.2: "averaged over each large time-step to apply at the averaged root positions"). With
+// weights ½, 1, …, 1, ½ on the n+1 samples of a large step it is the exact time average of the
+// piecewise-linear load history (trapezoidal rule).
 class RootLoadAverager {
  public:
-  void add(const RootLoads& loads);
+  void add(const RootLoads& loads, double weight = 1.0);
   RootLoads average() const;  // throws std::logic_error when nothing was added
-  void reset() { sum_ = RootLoads{}; count_ = 0; }
-  int count() const { return count_; }
+  void reset() { sum_ = RootLoads{}; weight_ = 0.0; }
+  double total_weight() const { return weight_; }
 
  private:
   RootLoads sum_;
-  int count_ = 0;
+  double weight_ = 0.0;
 };
 
 }  // namespace fowtsim
