@@ -1,16 +1,137 @@
+// fowtsim: the command line. The only place that prints and chooses exit codes:
+//   0 success · 1 a comparison or verification failed · 2 bad input or usage · 3 numerical failure
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include "coupling/coupling_study.hpp"
+
+#include "cli/progress_bar.hpp"
+#include "cli/reports.hpp"
+#include "cli/verify_cases.hpp"
+#include "compare/channel_compare.hpp"
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/core/version.hpp"
+#include "fowtsim/io/readers.hpp"
+#include "run/run_scene.hpp"
+#include "scenes/scene_schema.hpp"
+
+using namespace fowtsim;
 using namespace fowtsim::driver;
-int main() {
-  auto p = study_problem();
-  for (auto mode : {CouplingMode::single_rate, CouplingMode::multi_rate, CouplingMode::predictor_corrector}) {
-    for (int n : {1, 4, 16}) {
-      if (mode == CouplingMode::single_rate && n != 1) continue;
-      auto row = measure_order(p, mode, n, 0.2, 6, 20.0);
-      for (auto& s : row.samples) fmt::print("{:20} n={:2} dT={:.5f} eX={:.3e} eq={:.3e} {}\n", to_string(mode), n, s.dt_coupling_s, s.slow_error, s.fast_error, s.finite);
-      fmt::print("  order X {:.2f} q {:.2f}\n", row.slow_order, row.fast_order);
-      auto st = measure_stability(p, mode, n, 0.01, 5.0, 200.0);
-      fmt::print("  stable up to {:.4f} first unstable {:.4f}\n", st.largest_stable_dt_s, st.first_unstable_dt_s);
-    }
+
+namespace {
+
+constexpr int kExitFail = 1, kExitInput = 2, kExitNumerical = 3;
+
+int run_command(const RunRequest& request) {
+  ProgressBar bar(stdout);
+  const RunReport report = run_scene(request, [&](double t, double t_max) { bar.update(t, t_max); });
+  bar.done();
+  print_run_summary(stdout, report);
+  return 0;
+}
+
+int compare_command(const std::string& ref, const std::string& test, const std::vector<std::string>& channels,
+                    std::optional<double> rtol, std::optional<double> atol, const std::string& tolerance_file) {
+  CompareOptions options = tolerance_file.empty() ? CompareOptions{} : load_tolerance_file(tolerance_file);
+  if (rtol) options.default_tolerance.rtol = *rtol;
+  if (atol) options.default_tolerance.atol = *atol;
+  if (!channels.empty()) options.channels = channels;
+  const ComparisonReport report = compare_tables(io::read_channels(ref), io::read_channels(test), options);
+  print_comparison(stdout, report);
+  return report.pass() ? 0 : kExitFail;
+}
+
+int verify_command(std::vector<std::string> cases) {
+  if (cases.empty() || (cases.size() == 1 && cases[0] == "all")) cases = verification_case_names();
+  std::vector<VerificationRow> rows;
+  for (const std::string& name : cases) {
+    for (VerificationRow& row : run_verification_case(name, stdout)) rows.push_back(std::move(row));
   }
+  print_verification(stdout, rows);
+  const bool pass = std::all_of(rows.begin(), rows.end(), [](const VerificationRow& r) { return r.pass; });
+  fmt::print("{}\n", pass ? "all verification checks PASS" : "some verification checks FAIL");
+  return pass ? 0 : kExitFail;
+}
+
+int bench_command(std::vector<std::string> cases) {
+  if (cases.empty() || (cases.size() == 1 && cases[0] == "all")) cases = benchmark_case_names();
+  for (const std::string& name : cases) run_benchmark_case(name, stdout);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"fowtsim — time-domain aero-hydro-servo-elastic simulation of floating offshore wind turbines"};
+  app.set_version_flag("--version", std::string("fowtsim ") + kVersion);
+  app.require_subcommand(0, 1);
+  bool help_deck = false;
+  app.add_flag("--help-deck", help_deck, "print every deck key with type, unit, range and default");
+
+  RunRequest request;
+  std::string out_base, out_format;
+  double tmax = 0;
+  auto* run = app.add_subcommand("run", "run a scene deck");
+  run->add_option("deck", request.deck_path, "scene deck (YAML)")->required()->check(CLI::ExistingFile);
+  run->add_option("-o,--output", out_base, "output path without extension (default runs/<deck name>)");
+  run->add_option("--out-format", out_format, "output format")->check(CLI::IsMember({"h5", "out", "both"}));
+  run->add_option("--tmax", tmax, "simulated time [s], overrides simulation.t_max_s")->check(CLI::PositiveNumber);
+
+  std::string ref, test, tolerance_file;
+  std::vector<std::string> channels;
+  double rtol = 0, atol = 0;
+  auto* compare = app.add_subcommand("compare", "compare the channels of two output files (.h5, .out, .outb)");
+  compare->add_option("reference", ref, "reference output")->required()->check(CLI::ExistingFile);
+  compare->add_option("test", test, "output to check")->required()->check(CLI::ExistingFile);
+  compare->add_option("--channels", channels, "channels to compare (default: all common)")->delimiter(',');
+  auto* rtol_opt = compare->add_option("--rtol", rtol, "relative tolerance (default 1e-6)")->check(CLI::NonNegativeNumber);
+  auto* atol_opt = compare->add_option("--atol", atol, "absolute tolerance (default 1e-9)")->check(CLI::NonNegativeNumber);
+  auto* tol_opt = compare->add_option("--tolerances", tolerance_file, "per-channel tolerance file (YAML)")->check(CLI::ExistingFile);
+  tol_opt->excludes(rtol_opt)->excludes(atol_opt);
+
+  std::vector<std::string> cases;
+  auto* verify = app.add_subcommand("verify", "run verification cases against analytic or published answers");
+  verify->add_option("cases", cases, "cases (default all): coupling");
+  std::vector<std::string> bench_cases;
+  auto* bench = app.add_subcommand("bench", "benchmark run time against error");
+  bench->add_option("cases", bench_cases, "cases (default all): coupling");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : kExitInput;
+  }
+  if (help_deck) {
+    fmt::print("{}", io::describe_schema(scene_schema()));
+    return 0;
+  }
+  if (app.get_subcommands().empty()) {
+    fmt::print(stderr, "{}", app.help());
+    return kExitInput;
+  }
+  try {
+    if (*run) {
+      if (!out_base.empty()) request.output_base = out_base;
+      if (!out_format.empty()) request.output_format = out_format;
+      if (tmax > 0) request.t_max_s = tmax;
+      return run_command(request);
+    }
+    if (*compare) {
+      return compare_command(ref, test, channels, rtol_opt->count() ? std::optional(rtol) : std::nullopt,
+                             atol_opt->count() ? std::optional(atol) : std::nullopt, tolerance_file);
+    }
+    if (*verify) return verify_command(cases);
+    if (*bench) return bench_command(bench_cases);
+  } catch (const NumericalError& e) {
+    std::fflush(stdout);
+    fmt::print(stderr, "\nfowtsim: numerical failure: {}\nOutputs keep every step up to the failure.\n", e.what());
+    return kExitNumerical;
+  } catch (const std::exception& e) {
+    std::fflush(stdout);
+    fmt::print(stderr, "fowtsim: {}\n", e.what());
+    return kExitInput;
+  }
+  return 0;
 }

@@ -59,6 +59,12 @@ ErrorSample measure_error(const ToyProblem& problem, CouplingMode mode, int subs
   return sample;
 }
 
+double run_only(const ToyProblem& problem, CouplingMode mode, int substeps, double dt_coupling_s, double t_max_s) {
+  Scheduler scheduler(problem.slow, problem.fast, settings_for(mode, substeps, dt_coupling_s, t_max_s));
+  for (long i = 0; i < scheduler.settings().large_steps(); ++i) scheduler.step();
+  return scheduler.slow_state().position_m;
+}
+
 OrderRow measure_order(const ToyProblem& problem, CouplingMode mode, int substeps, double dt_start_s, int levels,
                        double t_max_s) {
   OrderRow row{mode, substeps, {}, NAN, NAN};

@@ -33,6 +33,10 @@ struct ErrorSample {
 ErrorSample measure_error(const ToyProblem& problem, CouplingMode mode, int substeps, double dt_coupling_s,
                           double t_max_s);
 
+// Steps the coupled toy problem to t_max_s and returns the final slow position [m]; the loop
+// alone, without the exact solution, for timing.
+double run_only(const ToyProblem& problem, CouplingMode mode, int substeps, double dt_coupling_s, double t_max_s);
+
 struct OrderRow {
   CouplingMode mode;
   int substeps;

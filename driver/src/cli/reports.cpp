@@ -1,0 +1,42 @@
+#include "cli/reports.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace fowtsim::driver {
+
+void print_run_summary(std::FILE* out, const RunReport& r) {
+  fmt::print(out, "── fowtsim run summary ──────────────────────────────\n");
+  fmt::print(out, "  simulated time   {:.3f} s ({} large steps × {} substeps, {})\n", r.simulated_s, r.large_steps,
+             r.substeps, r.coupling);
+  fmt::print(out, "  wall time        {:.3f} s\n", r.wall_s);
+  fmt::print(out, "  real-time factor {:.1f}x faster than real time\n", r.wall_s > 0 ? r.simulated_s / r.wall_s : INFINITY);
+  for (const auto& p : r.outputs) fmt::print(out, "  output           {}\n", p.string());
+  fmt::print(out, "  warnings         {}\n", r.warnings.empty() ? "none" : std::to_string(r.warnings.size()));
+  for (const auto& w : r.warnings) fmt::print(out, "    - {}\n", w);
+}
+
+void print_comparison(std::FILE* out, const ComparisonReport& r) {
+  fmt::print(out, "compared {} samples over {:.6g}–{:.6g} s\n", r.samples, r.t_start_s, r.t_end_s);
+  fmt::print(out, "{:<18} {:>8} {:>12} {:>11} {:>11} {:>9} {:>20}  {}\n", "channel", "unit", "max|err|", "rms/rms",
+             "rms/range", "corr", "tolerance r/a", "result");
+  for (const auto& c : r.channels) {
+    fmt::print(out, "{:<18} {:>8} {:>12.4e} {:>11.3e} {:>11.3e} {:>9.6f} {:>9.1e}/{:<9.1e}  {}\n", c.name, c.unit,
+               c.max_abs_error, c.rms_error_over_rms, c.rms_error_over_range, c.correlation, c.tolerance.rtol,
+               c.tolerance.atol, c.pass ? "PASS" : fmt::format("FAIL (worst at t = {:.6g} s)", c.worst_time_s));
+  }
+  for (const auto& n : r.missing_in_test) fmt::print(out, "{:<18} missing in the test file{}\n", n, r.required_missing ? " (required)" : "");
+  for (const auto& n : r.missing_in_reference) fmt::print(out, "{:<18} missing in the reference file\n", n);
+  fmt::print(out, "{}\n", r.pass() ? "PASS" : "FAIL");
+}
+
+void print_verification(std::FILE* out, const std::vector<VerificationRow>& rows) {
+  fmt::print(out, "{:<10} {:<46} {:>11} {:<18} {:<46} {}\n", "case", "metric", "value", "tolerance", "source", "result");
+  for (const auto& r : rows) {
+    fmt::print(out, "{:<10} {:<46} {:>11.4g} {:<18} {:<46} {}\n", r.case_name, r.metric, r.value, r.tolerance,
+               r.source, r.pass ? "PASS" : "FAIL");
+  }
+}
+
+}  // namespace fowtsim::driver

@@ -1,0 +1,26 @@
+#pragma once
+// Text the command line prints: the run summary, the comparison table, verification tables.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "compare/channel_compare.hpp"
+#include "run/run_types.hpp"
+
+namespace fowtsim::driver {
+
+void print_run_summary(std::FILE* out, const RunReport& report);
+void print_comparison(std::FILE* out, const ComparisonReport& report);
+
+// One line of `fowtsim verify`: a measured metric against its tolerance and the source of both.
+struct VerificationRow {
+  std::string case_name;   // e.g. "coupling"
+  std::string metric;      // what was measured
+  double value;            // measured value
+  std::string tolerance;   // acceptance, as text, e.g. "1 ± 0.1"
+  std::string source;      // where the expectation comes from
+  bool pass;
+};
+void print_verification(std::FILE* out, const std::vector<VerificationRow>& rows);
+
+}  // namespace fowtsim::driver

@@ -1,0 +1,55 @@
+#include "cli/verify_cases.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "coupling/coupling_study.hpp"
+#include "fowtsim/core/error.hpp"
+
+namespace fowtsim::driver {
+
+std::vector<VerificationRow> verify_coupling(std::FILE* out);  // verify_coupling.cpp
+
+std::vector<std::string> verification_case_names() { return {"coupling"}; }
+
+std::vector<VerificationRow> run_verification_case(const std::string& name, std::FILE* out) {
+  if (name == "coupling") return verify_coupling(out);
+  throw InputError({"verify", {}, name, "known cases: coupling"}, fmt::format("unknown verification case '{}'", name));
+}
+
+std::vector<std::string> benchmark_case_names() { return {"coupling"}; }
+
+// Wall time against error for each coupling mode over 200 s of the toy problem. Times are from
+// this one run on this machine; compare them as ratios.
+void run_benchmark_case(const std::string& name, std::FILE* out) {
+  if (name != "coupling") {
+    throw InputError({"bench", {}, name, "known cases: coupling"}, fmt::format("unknown benchmark case '{}'", name));
+  }
+  const ToyProblem problem = study_problem();
+  constexpr double kTmax = 200.0;
+  struct Run {
+    CouplingMode mode;
+    int n;
+    double dt;
+  };
+  const Run runs[] = {{CouplingMode::single_rate, 1, 0.1},        {CouplingMode::single_rate, 1, 0.025},
+                      {CouplingMode::multi_rate, 16, 0.4},         {CouplingMode::multi_rate, 16, 0.1},
+                      {CouplingMode::predictor_corrector, 16, 0.4}, {CouplingMode::predictor_corrector, 16, 0.1}};
+  fmt::print(out, "{:<20} {:>3} {:>7} {:>11} {:>11} {:>10} {:>9}\n", "mode", "n", "ΔT [s]", "err X slow", "err q fast",
+             "wall [ms]", "vs first");
+  double first_wall = 0;
+  for (const Run& r : runs) {
+    const ErrorSample e = measure_error(problem, r.mode, r.n, r.dt, kTmax);
+    const auto start = std::chrono::steady_clock::now();
+    volatile double sink = run_only(problem, r.mode, r.n, r.dt, kTmax);  // keep the loop from being optimised away
+    (void)sink;
+    const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (first_wall == 0) first_wall = wall;
+    fmt::print(out, "{:<20} {:>3} {:>7.3f} {:>11.3e} {:>11.3e} {:>10.2f} {:>8.2f}x\n", to_string(r.mode), r.n, r.dt,
+               e.slow_error, e.fast_error, wall, wall / first_wall);
+  }
+}
+
+}  // namespace fowtsim::driver

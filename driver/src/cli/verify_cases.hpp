@@ -1,0 +1,19 @@
+#pragma once
+// Named verification cases of `fowtsim verify` and benchmark cases of `fowtsim bench`.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cli/reports.hpp"
+
+namespace fowtsim::driver {
+
+std::vector<std::string> verification_case_names();
+// Runs one case, printing its detail tables to `out`; returns its rows. Throws InputError for an
+// unknown name.
+std::vector<VerificationRow> run_verification_case(const std::string& name, std::FILE* out);
+
+std::vector<std::string> benchmark_case_names();
+void run_benchmark_case(const std::string& name, std::FILE* out);
+
+}  // namespace fowtsim::driver

@@ -1,0 +1,136 @@
+#include "compare/channel_compare.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/core/interpolation.hpp"
+
+namespace fowtsim::driver {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+struct Statistics {
+  double mean = 0, rms = 0, min = 0, max = 0;
+};
+
+Statistics statistics(const std::vector<double>& v) {
+  Statistics s{0, 0, v.front(), v.front()};
+  for (double x : v) {
+    s.mean += x;
+    s.rms += x * x;
+    s.min = std::min(s.min, x);
+    s.max = std::max(s.max, x);
+  }
+  s.mean /= static_cast<double>(v.size());
+  s.rms = std::sqrt(s.rms / static_cast<double>(v.size()));
+  return s;
+}
+
+double correlation(const std::vector<double>& a, const std::vector<double>& b) {
+  const double ma = statistics(a).mean, mb = statistics(b).mean;
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    sab += (a[i] - ma) * (b[i] - mb);
+    saa += (a[i] - ma) * (a[i] - ma);
+    sbb += (b[i] - mb) * (b[i] - mb);
+  }
+  return (saa > 0 && sbb > 0) ? sab / std::sqrt(saa * sbb) : kNaN;
+}
+
+ChannelComparison compare_channel(const std::string& name, const std::string& unit, const std::vector<double>& ref,
+                                  const std::vector<double>& test, const std::vector<double>& time,
+                                  ChannelTolerance tol) {
+  ChannelComparison c;
+  c.name = name;
+  c.unit = unit;
+  c.tolerance = tol;
+  c.worst_excess = -std::numeric_limits<double>::infinity();
+  std::vector<double> error(ref.size());
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    error[i] = test[i] - ref[i];
+    // A NaN in either file must fail: NaN comparisons are false, so test for it explicitly.
+    const double excess = std::isfinite(error[i]) ? std::abs(error[i]) - (tol.atol + tol.rtol * std::abs(ref[i]))
+                                                  : std::numeric_limits<double>::infinity();
+    if (excess > c.worst_excess) {
+      c.worst_excess = excess;
+      c.worst_time_s = time[i];
+    }
+    c.max_abs_error = std::max(c.max_abs_error, std::abs(error[i]));
+  }
+  const Statistics sr = statistics(ref), se = statistics(error);
+  c.rms_error_over_rms = sr.rms > 0 ? se.rms / sr.rms : kNaN;
+  c.rms_error_over_range = sr.max > sr.min ? se.rms / (sr.max - sr.min) : kNaN;
+  c.correlation = correlation(ref, test);
+  c.pass = c.worst_excess <= 0.0;
+  return c;
+}
+
+}  // namespace
+
+bool ComparisonReport::pass() const {
+  if (required_missing || channels.empty()) return false;
+  return std::all_of(channels.begin(), channels.end(), [](const ChannelComparison& c) { return c.pass; });
+}
+
+ComparisonReport compare_tables(const io::ChannelTable& reference, const io::ChannelTable& test,
+                                const CompareOptions& options) {
+  ComparisonReport report;
+  const std::vector<double>& tr = reference.time();
+  const std::vector<double>& tt = test.time();
+  if (tr.empty() || tt.empty()) throw InputError({"compare", {}, "Time", ""}, "a file has no time samples");
+  require_strictly_increasing(tt, "test Time");
+  report.t_start_s = std::max(tr.front(), tt.front());
+  report.t_end_s = std::min(tr.back(), tt.back());
+  // Reference samples inside the common window (1e-9 s slack for printed time values).
+  std::vector<std::size_t> rows;
+  std::vector<double> time;
+  for (std::size_t i = 0; i < tr.size(); ++i) {
+    if (tr[i] >= report.t_start_s - 1e-9 && tr[i] <= report.t_end_s + 1e-9) {
+      rows.push_back(i);
+      time.push_back(tr[i]);
+    }
+  }
+  if (rows.empty()) {
+    throw InputError({"compare", {}, "Time", "check that both files cover the same time span"},
+                     fmt::format("no common time window: reference {}–{} s, test {}–{} s", tr.front(), tr.back(),
+                                 tt.front(), tt.back()));
+  }
+  report.samples = rows.size();
+
+  std::vector<std::string> wanted = options.channels;
+  const bool explicit_list = !wanted.empty();
+  if (!explicit_list) wanted.assign(reference.names.begin() + 1, reference.names.end());
+  for (std::size_t c = 1; c < test.names.size(); ++c) {
+    if (!reference.find(test.names[c])) report.missing_in_reference.push_back(test.names[c]);
+  }
+
+  std::vector<double> ref_values(rows.size()), test_values(rows.size());
+  for (const std::string& name : wanted) {
+    const auto rc = reference.find(name), tc = test.find(name);
+    if (!rc || !tc) {
+      if (!tc) report.missing_in_test.push_back(name);
+      if (!rc) report.missing_in_reference.push_back(name);
+      if (explicit_list) report.required_missing = true;
+      continue;
+    }
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      ref_values[k] = reference.columns[*rc][rows[k]];
+      test_values[k] = interpolate_linear(tt, test.columns[*tc], time[k]);
+    }
+    const auto it = options.tolerances.find(name);
+    const ChannelTolerance tol = it != options.tolerances.end() ? it->second : options.default_tolerance;
+    report.channels.push_back(compare_channel(name, reference.units[*rc], ref_values, test_values, time, tol));
+  }
+  if (report.channels.empty() && !report.required_missing) {
+    throw InputError({"compare", {}, "", "use --channels to pick channels present in both files"},
+                     "the two files have no channel in common");
+  }
+  return report;
+}
+
+}  // namespace fowtsim::driver

@@ -1,0 +1,63 @@
+#pragma once
+// Channel-by-channel comparison of two output tables (issue 2, item 7): how users check a run
+// against a reference run (ours, OpenFAST's) and how the regression tier works.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fowtsim/io/channel_table.hpp"
+
+namespace fowtsim::driver {
+
+// Pass when |test − ref| ≤ atol + rtol·|ref| at every aligned sample (numpy.isclose style,
+// as in OpenFAST's r-test).
+struct ChannelTolerance {
+  double rtol = 1e-6;  // relative tolerance [-]
+  double atol = 1e-9;  // absolute tolerance [channel unit]
+};
+
+struct CompareOptions {
+  ChannelTolerance default_tolerance;                  // for channels not listed below
+  std::map<std::string, ChannelTolerance> tolerances;  // per-channel overrides
+  std::vector<std::string> channels;  // channels to compare; empty = all common to both (not Time).
+                                      // A listed channel missing from either file fails the comparison.
+};
+
+struct ChannelComparison {
+  std::string name;
+  std::string unit;                 // of the reference
+  double max_abs_error = 0;         // max |test − ref| [unit]
+  double rms_error_over_rms = 0;    // rms(test − ref) / rms(ref) [-]; NaN when rms(ref) = 0
+  double rms_error_over_range = 0;  // rms(test − ref) / (max ref − min ref) [-]; NaN for a constant ref
+  double correlation = 0;           // Pearson correlation [-]; NaN when either is constant
+  double worst_excess = 0;          // max of |test − ref| − (atol + rtol·|ref|) (≤ 0 passes)
+  double worst_time_s = 0;          // time of the worst excess [s]
+  ChannelTolerance tolerance;
+  bool pass = false;
+};
+
+struct ComparisonReport {
+  std::vector<ChannelComparison> channels;       // in the reference's order
+  std::vector<std::string> missing_in_test;      // requested/reference channels absent from test
+  std::vector<std::string> missing_in_reference; // test channels absent from the reference
+  bool required_missing = false;                 // a channel the user asked for is absent
+  double t_start_s = 0, t_end_s = 0;             // compared window (overlap of both files) [s]
+  std::size_t samples = 0;                       // reference samples inside the window
+  bool pass() const;
+};
+
+// Aligns test onto the reference time samples inside the common time window (linear
+// interpolation) and compares matching channels. Throws InputError when the files share no
+// time window or no channel.
+ComparisonReport compare_tables(const io::ChannelTable& reference, const io::ChannelTable& test,
+                                const CompareOptions& options);
+
+// Per-channel tolerance file (YAML, OpenFAST regression style):
+//   default: {rtol: 1e-6, atol: 1e-9}
+//   channels:
+//     ToySlowPos: {rtol: 1e-5, atol: 1e-8}
+// Listed channels are required. Bad files stop with file:line:col, key and what was expected.
+CompareOptions load_tolerance_file(const std::string& path);
+
+}  // namespace fowtsim::driver

@@ -1,0 +1,15 @@
+#include "run/run_scene.hpp"
+
+#include "fowtsim/io/schema.hpp"
+#include "scenes/scene_schema.hpp"
+#include "scenes/toy_scene.hpp"
+
+namespace fowtsim::driver {
+
+RunReport run_scene(const RunRequest& request, const ProgressCallback& progress) {
+  const io::ValidatedDeck deck = io::read_deck(scene_schema(), request.deck_path);
+  // The toy oscillators are the only scene until the turbine modules land.
+  return run_toy_scene(deck, request, progress);
+}
+
+}  // namespace fowtsim::driver

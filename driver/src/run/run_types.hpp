@@ -1,0 +1,31 @@
+#pragma once
+// What the command line asks of a run, and what a run reports back to it.
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fowtsim::driver {
+
+struct RunRequest {
+  std::filesystem::path deck_path;                   // top-level scene deck
+  std::optional<std::filesystem::path> output_base;  // -o: output path without extension
+  std::optional<std::string> output_format;          // --out-format h5|out|both (overrides the deck)
+  std::optional<double> t_max_s;                     // --tmax: overrides simulation.t_max_s [s]
+};
+
+struct RunReport {
+  double simulated_s = 0.0;                    // simulated time reached [s]
+  double wall_s = 0.0;                         // wall-clock time of the time loop [s]
+  long large_steps = 0;                        // large steps taken
+  int substeps = 1;                            // small steps per large step
+  std::string coupling;                        // coupling mode
+  std::vector<std::filesystem::path> outputs;  // files written
+  std::vector<std::string> warnings;           // shown in the summary
+};
+
+// Called after every large step with the current and the final simulated time [s].
+using ProgressCallback = std::function<void(double time_s, double t_max_s)>;
+
+}  // namespace fowtsim::driver
