@@ -1,6 +1,9 @@
 #include "fowtsim/toy/fast_oscillator.hpp"
 
+#include <Eigen/Core>
+
 #include "fowtsim/core/health.hpp"
+#include "fowtsim/core/rk4.hpp"
 
 namespace fowtsim::toy {
 namespace {
@@ -16,14 +19,14 @@ FastOscillator::State FastOscillator::make_state(const Params& p) { return {p.in
 void FastOscillator::advance(const Params& p, const Input& u, double t, double dt, State& s) {
   const double a0 = u.frame_begin.acceleration_m_s2.x();
   const double a1 = u.frame_end.acceleration_m_s2.x();
-  const double am = 0.5 * (a0 + a1);  // linear frame acceleration: value at the midpoint
-  const double q = s.position_m, v = s.velocity_m_s;
-  const double k1q = v, k1v = relative_acceleration(p, q, v, a0);
-  const double k2q = v + 0.5 * dt * k1v, k2v = relative_acceleration(p, q + 0.5 * dt * k1q, k2q, am);
-  const double k3q = v + 0.5 * dt * k2v, k3v = relative_acceleration(p, q + 0.5 * dt * k2q, k3q, am);
-  const double k4q = v + dt * k3v, k4v = relative_acceleration(p, q + dt * k3q, k4q, a1);
-  s.position_m = q + dt / 6.0 * (k1q + 2 * k2q + 2 * k3q + k4q);
-  s.velocity_m_s = v + dt / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v);
+  // Frame acceleration linear over the step, between the two snapshots the driver hands in.
+  const auto rhs = [&](double time, const Eigen::Vector2d& y) {
+    const double frame_acc = a0 + (time - t) / dt * (a1 - a0);
+    return Eigen::Vector2d(y[1], relative_acceleration(p, y[0], y[1], frame_acc));
+  };
+  const Eigen::Vector2d y = rk4_step(Eigen::Vector2d(s.position_m, s.velocity_m_s), t, dt, rhs);
+  s.position_m = y[0];
+  s.velocity_m_s = y[1];
   check_bounded("toy.fast", "q (fast relative position)", s.position_m, p.divergence_limit_m, t + dt);
   check_finite("toy.fast", "qdot (fast relative velocity)", s.velocity_m_s, t + dt);
 }

@@ -1,6 +1,9 @@
 #include "fowtsim/toy/slow_oscillator.hpp"
 
+#include <Eigen/Core>
+
 #include "fowtsim/core/health.hpp"
+#include "fowtsim/core/rk4.hpp"
 
 namespace fowtsim::toy {
 namespace {
@@ -15,13 +18,12 @@ SlowOscillator::State SlowOscillator::make_state(const Params& p) { return {p.in
 
 void SlowOscillator::advance(const Params& p, const Input& u, double t, double dt, State& s) {
   const double f = u.interface_loads.force_N.x();
-  const double x = s.position_m, v = s.velocity_m_s;
-  const double k1x = v, k1v = acceleration(p, x, v, f);
-  const double k2x = v + 0.5 * dt * k1v, k2v = acceleration(p, x + 0.5 * dt * k1x, k2x, f);
-  const double k3x = v + 0.5 * dt * k2v, k3v = acceleration(p, x + 0.5 * dt * k2x, k3x, f);
-  const double k4x = v + dt * k3v, k4v = acceleration(p, x + dt * k3x, k4x, f);
-  s.position_m = x + dt / 6.0 * (k1x + 2 * k2x + 2 * k3x + k4x);
-  s.velocity_m_s = v + dt / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v);
+  const auto rhs = [&](double, const Eigen::Vector2d& y) {
+    return Eigen::Vector2d(y[1], acceleration(p, y[0], y[1], f));
+  };
+  const Eigen::Vector2d y = rk4_step(Eigen::Vector2d(s.position_m, s.velocity_m_s), t, dt, rhs);
+  s.position_m = y[0];
+  s.velocity_m_s = y[1];
   check_bounded("toy.slow", "X (slow position)", s.position_m, p.divergence_limit_m, t + dt);
   check_finite("toy.slow", "Xdot (slow velocity)", s.velocity_m_s, t + dt);
 }
