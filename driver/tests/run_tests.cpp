@@ -115,13 +115,15 @@ TEST_CASE("bad scene decks stop before the run with file, line and key", "[unit]
 }
 
 TEST_CASE("the default deck's run matches the exact solution to the coupling error", "[verification][run]") {
-  // multi_rate, ΔT = 0.05 s, n = 10 over 60 s: the study measured a relative slow error of
-  // 4.1e-3 at this ΔT (first order, 20 s); allow 10x for the longer run.
+  // multi_rate, ΔT = 0.05 s, n = 10 over 60 s: measured max |X − X_exact| = 1.46e-2 m (the lag
+  // error accumulates: 4.7e-3 over the study's 20 s). The run is deterministic and the regression
+  // tier pins every digit; this bound sits just above the measurement so that a change in the
+  // coupling's accuracy is noticed here, against the exact solution, and explained.
   const auto dir = testing::scratch_dir("default_deck");
   const auto deck = testing::source_dir() / "inputs/toy_coupled_oscillators.yaml";
   run_scene({deck, dir / "run", std::string("h5"), std::nullopt}, nullptr);
   const io::ChannelTable t = io::read_hdf5_channels(dir / "run.h5");
   double worst = 0;
   for (double e : t.columns[*t.find("ToySlowPosErr")]) worst = std::max(worst, std::abs(e));
-  CHECK(worst < 0.04);  // X0 = 1 m, so this is relative too
+  CHECK(worst < 0.02);  // X0 = 1 m, so this is relative too
 }

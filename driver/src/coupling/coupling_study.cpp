@@ -75,6 +75,7 @@ OrderRow measure_order(const ToyProblem& problem, CouplingMode mode, int substep
   if (levels >= 2) {
     const ErrorSample& coarse = row.samples[levels - 2];
     const ErrorSample& fine = row.samples[levels - 1];
+    if (!coarse.finite || !fine.finite) return row;  // NaN order: a diverged run has none
     row.slow_order = std::log2(coarse.slow_error / fine.slow_error);
     row.fast_order = std::log2(coarse.fast_error / fine.fast_error);
   }

@@ -103,8 +103,8 @@ class MultiRateScheduler {
     return averager_.average();
   }
 
-  const typename Slow::Params& slow_params_;
-  const typename Fast::Params& fast_params_;
+  typename Slow::Params slow_params_;  // copied once: the scheduler never refers to a caller's object
+  typename Fast::Params fast_params_;
   CouplingSettings settings_;
   typename Slow::State slow_;
   typename Slow::State slow_before_step_;  // predictor-corrector rollback point

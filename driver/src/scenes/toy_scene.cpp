@@ -44,8 +44,10 @@ CouplingSettings read_settings(const io::ValidatedDeck& deck, const RunRequest& 
   try {
     validate(s);
   } catch (const InputError& e) {
-    // Point at the deck entry the setting came from.
-    throw InputError(e.context(), where(deck, "simulation." + e.context().variable) + ": " + e.message());
+    // Point at where the setting came from: the command line or the deck entry.
+    const bool from_command_line = request.t_max_s && e.context().variable == "t_max_s";
+    throw InputError(e.context(), (from_command_line ? std::string("--tmax") : where(deck, "simulation." + e.context().variable)) +
+                                      ": " + e.message());
   }
   return s;
 }

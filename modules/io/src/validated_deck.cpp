@@ -144,25 +144,27 @@ std::vector<std::string> ValidatedDeck::keys(std::string_view path) const {
   return keys;
 }
 
+namespace {
+
+// Reading an absent (optional, left out) path is a programming error: the caller checks has().
+void require_present(const DeckNode* node, const std::string& path, const char* reader) {
+  if (node == nullptr) {
+    throw std::logic_error(
+        fmt::format("deck path `{}` is absent from the deck; check has() before {}()", path, reader));
+  }
+}
+
+}  // namespace
+
 ValidatedDeck ValidatedDeck::section(std::string_view path) const {
   const Resolved at = resolve(path);
-  if (at.node == nullptr) {
-    throw std::logic_error(
-        fmt::format("deck path `{}` is absent from the deck; check has() "
-                    "before section()",
-                    at.path));
-  }
+  require_present(at.node, at.path, "section");
   return ValidatedDeck(shared_, at.schema, at.node);
 }
 
 SourceLocation ValidatedDeck::location(std::string_view path) const {
   const Resolved at = resolve(path);
-  if (at.node == nullptr) {
-    throw std::logic_error(
-        fmt::format("deck path `{}` is absent from the deck; check has() "
-                    "before location()",
-                    at.path));
-  }
+  require_present(at.node, at.path, "location");
   return at.node->location;
 }
 
