@@ -1,0 +1,19 @@
+#pragma once
+// What a beam reports: tip deflection and rotation, and the loads at its root. All in the
+// floating frame f the root is clamped to (BeamDyn's root frame "r" when f is that frame).
+#include "fowtsim/beam/beam_model.hpp"
+#include "fowtsim/beam/beam_state.hpp"
+
+namespace fowtsim::beam {
+
+struct BeamOutputs {
+  Vec3 tip_displacement_m = Vec3::Zero();  // tip point − undeformed tip point, in f [m]
+  Vec3 tip_rotation_wm = Vec3::Zero();     // Wiener–Milenkovic parameters of R_tip R0_tipᵀ [-]
+  Vec3 tip_position_m = Vec3::Zero();      // deformed tip point, in f [m]
+  Vec6 root_load = Vec6::Zero();           // [force N; moment N·m about the root point] that the
+                                           // beam puts on its root (incl. strain-rate damping), in f
+};
+
+BeamOutputs beam_outputs(const BeamModel& model, const BeamState& state);
+
+}  // namespace fowtsim::beam

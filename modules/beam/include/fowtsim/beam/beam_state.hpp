@@ -1,0 +1,44 @@
+#pragma once
+// What the beam integrates (State) and what the driver hands in each step (Input).
+//
+// The unknowns are the base configuration of every node — position x_n and orientation R_n in
+// the floating frame f — and the node velocities relative to f. Each step solves for small
+// increments (u*_n, θ*_n) about this base (seed 000 eqs. 2.42–2.43) and folds them into it
+// (eqs. 2.67–2.68) with exact rotations. Increments and velocities are resolved in f, so the
+// velocity transfer to the new base (eqs. 2.78–2.79, which rotate q-frame components) is the
+// identity here.
+#include <vector>
+
+#include "fowtsim/beam/beam_model.hpp"
+#include "fowtsim/core/types.hpp"
+
+namespace fowtsim::beam {
+
+// Motion of the floating frame f the beam root is clamped to, all components in f.
+struct FrameKinematics {
+  Vec3 acceleration_m_s2 = Vec3::Zero();          // a_f^W: acceleration of f's origin [m/s²]
+  Vec3 angular_velocity_rad_s = Vec3::Zero();     // Ω_f [rad/s]
+  Vec3 angular_acceleration_rad_s2 = Vec3::Zero();  // Ω̇_f [rad/s²]
+  Vec3 gravity_m_s2 = Vec3::Zero();               // g resolved in f [m/s²]
+};
+
+// Dead loads (fixed direction in f) for one step.
+struct BeamInput {
+  FrameKinematics frame;
+  std::vector<Vec6> node_loads;  // [force N; moment N·m] on segment n, acting at its load arm
+                                 // (empty = none); distributed loads integrated over the segment
+  Vec6 tip_load = Vec6::Zero();  // [force; moment] at the tip point [N, N·m]
+};
+
+struct BeamState {
+  double time_s = 0.0;
+  std::vector<Vec3> position_m;   // x_n: base position of node n, in f [m]
+  std::vector<Mat3> orientation;  // R_n: local frame of node n (columns in f)
+  std::vector<Vec6> velocity;     // [ẋ_n; ω_n] relative to f, in f [m/s; rad/s]
+  double last_increment_rad = 0.0;  // largest |θ*_n| of the last step (small-angle check)
+};
+
+// Undeformed, at rest relative to f.
+BeamState make_state(const BeamModel& model);
+
+}  // namespace fowtsim::beam

@@ -1,0 +1,29 @@
+#pragma once
+// The benchmark beams of seed 000 §2.5 (and seed 002 §5.2), built in BeamDyn's convention (local
+// axis 3 along the beam), with their exact solutions where one exists. Shared by the tests and by
+// `fowtsim verify beam-…`.
+#include "fowtsim/beam/beam_model.hpp"
+
+namespace fowtsim::beam::benchmarks {
+
+// §2.5.1: straight cantilever along z, length 1, bending stiffness 2 about x (and y), shear and
+// axial stiffness 1e4 (stiff: the exact circle is inextensible), torsion 2. Unit mass per length.
+BeamDefinition rollup_beam();
+inline constexpr double kRollupLength = 1.0;
+inline constexpr double kRollupBendingStiffness = 2.0;
+
+// Exact position of the point at arclength s of a straight beam along z bent by a pure moment
+// M about x with bending stiffness EI: an arc of curvature κ = M/EI (a rotation about +x turns
+// z towards −y).
+Vec3 rollup_exact_position(double s, double moment_x, double bending_stiffness);
+
+// §2.5.2 (Bathe–Bolourchi): 45° arc of radius 100 starting along z, bending towards +x (as the
+// BeamDyn r-test bd_curved_beam), unit square section E = 1e7, G = 0.5e7, shear factor 5/6.
+BeamDefinition curved_beam();
+
+// §2.5.1 time-step study: the 1 m steel strip 3.31 × 3.31 mm, E 200 GPa, G 79.3 GPa,
+// ρ 7850 kg/m³, stiffness damping 1e-6 s, rolled up by its tip moment.
+BeamDefinition steel_strip();
+double steel_strip_rollup_moment();  // 4π EI / L: the moment that closes the circle [N·m]
+
+}  // namespace fowtsim::beam::benchmarks

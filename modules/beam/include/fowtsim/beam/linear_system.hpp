@@ -1,0 +1,51 @@
+#pragma once
+// The locally linear system of one step (seed 000 eq. 2.56), assembled for the whole beam about
+// the current base configuration:
+//     M q̈ + C q̇ + K q = r,     q = [u*_0; θ*_0; …; u*_{N−1}; θ*_{N−1}] (increments, in f)
+//   M  equivalent mass (eq. 2.57), block diagonal
+//   C  inertial damping (eq. 2.62: Coriolis, gyroscopic) + structural damping (eq. 2.61)
+//   K  elastic stiffness (eq. 2.59, Appendix A) + inertial stiffness (eq. 2.60) + the stiffness of
+//      dead loads acting at an arm that rotates with the node
+//   r  elastic loads of the base (eqs. 2.63–2.64) + inertial loads of the frame motion
+//      (eqs. 2.65–2.66) + external loads
+// C and K are block tridiagonal.
+//
+// Departure from the seed's form: the angular momentum balance of each segment is taken about its
+// node (the elastic centre P^n) instead of its mass centre G^n. The physics is the same (the two
+// differ by the moment of the segment's linear momentum balance) and the mass matrix becomes
+// symmetric, M_n = [m I, −m c̃; m c̃, J_P], with c = G − P and J_P the inertia about P.
+// Gravity enters as the frame accelerating at −g, so its eccentric moment m c × g and that
+// moment's change with rotation follow from the inertial terms.
+#include <vector>
+
+#include "fowtsim/beam/beam_model.hpp"
+#include "fowtsim/beam/beam_state.hpp"
+#include "fowtsim/beam/block_tridiagonal.hpp"
+
+namespace fowtsim::beam {
+
+struct SectionResult;
+
+struct LinearizedBeam {
+  std::vector<Mat6> mass;       // M, block diagonal
+  BlockTridiagonal damping;     // C
+  BlockTridiagonal stiffness;   // K
+  VecX rhs;                     // r
+  Vec6 root_load = Vec6::Zero();  // [force; moment about the root] the beam puts on the root, in f
+
+  void resize(int nodes);
+};
+
+enum class Inertia { included, static_only };
+
+// Assemble the system about `state`. With Inertia::static_only, M and the velocity terms of C are
+// left zero but the inertial loads and stiffness of a steadily moving frame (centrifugal, gravity)
+// stay: the static solver of §2.5 with frame loads.
+void linearize(const BeamModel& model, const BeamInput& input, const BeamState& state,
+               Inertia inertia, LinearizedBeam& out);
+
+// Loads the beam puts on its root (force; moment about the root point), in f, including
+// strain-rate damping of the state's velocities.
+Vec6 root_reaction(const BeamModel& model, const BeamState& state);
+
+}  // namespace fowtsim::beam

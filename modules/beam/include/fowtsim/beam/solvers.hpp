@@ -1,0 +1,85 @@
+#pragma once
+// The two solvers of seed 000 §2.5 on the piecewise-linear system of linear_system.hpp:
+//  * static: repeated linear solves K q = r, each folded into the base (§2.4.3), until the
+//    increments vanish — Newton's method, since K is the exact tangent of the discrete loads;
+//  * dynamic: one linear solve per step about the base of the previous step, no iteration
+//    (§2.4.3), with either integrator of the locally linear system:
+//      - trapezoidal (A-stable, second order, one block-tridiagonal factorisation per step);
+//      - erk: SUNDIALS ARKODE explicit Dormand–Prince 5(4) with adaptive internal steps, the
+//        seed's ode45 setting (relative tolerance 1e-6) — the reference.
+#include <memory>
+#include <string>
+
+#include "fowtsim/beam/beam_model.hpp"
+#include "fowtsim/beam/beam_state.hpp"
+#include "fowtsim/beam/linear_system.hpp"
+
+namespace fowtsim::beam {
+
+struct StaticOptions {
+  int load_steps = 1;             // loads applied in equal fractions, equilibrium at each
+  int max_iterations = 100;       // per load step
+  double tolerance = 1e-10;       // RMS increment, translations / beam length and rotations [-]
+  double max_rotation_rad = 0.5;  // an iterate turning a node more than this is scaled down
+};
+
+struct StaticReport {
+  int iterations = 0;       // total over all load steps
+  double final_increment = 0.0;
+};
+
+// Static equilibrium under `input` (dead loads, gravity, steady frame motion); throws
+// NumericalError if an iteration fails or does not converge.
+StaticReport solve_static(const BeamModel& model, const BeamInput& input, BeamState& state,
+                          const StaticOptions& options = {});
+
+enum class Integrator { trapezoidal, erk };
+Integrator integrator_from_name(const std::string& name);  // "trapezoidal" | "erk"
+std::string integrator_name(Integrator integrator);
+
+struct DynamicOptions {
+  Integrator integrator = Integrator::trapezoidal;
+  // Largest incremental rotation allowed in one step. The linearisation drops terms of relative
+  // size |θ*|/2 (sin θ ≈ θ, cos θ ≈ 1 − θ²/2 → 1); 0.1 rad keeps them below 5 %, beyond which the
+  // step is no longer a small-angle increment (seed §2.4: "when the incremental rotation within
+  // each time-step conforms to small-angle assumptions").
+  double max_increment_rad = 0.1;
+  double erk_relative_tolerance = 1e-6;   // seed §2.5: ode45 RelTol
+  double erk_absolute_tolerance = 1e-12;  // on increments [m, rad] and their rates
+};
+
+// Workspace of the dynamic step: sized on first use, reused without allocation afterwards.
+class DynamicStepper {
+ public:
+  DynamicStepper(const BeamModel& model, DynamicOptions options);
+  ~DynamicStepper();
+  DynamicStepper(const DynamicStepper&) = delete;
+  DynamicStepper& operator=(const DynamicStepper&) = delete;
+
+  // Advance state by dt under `input` (taken as the mid-step value). Throws NumericalError on a
+  // non-finite result, a singular system or an increment above max_increment_rad.
+  void step(const BeamInput& input, double dt, BeamState& state);
+
+  const LinearizedBeam& system() const { return system_; }
+  long erk_rhs_evaluations() const { return erk_rhs_evaluations_; }
+
+  struct Erk;  // ARKODE state of the erk integrator (src/erk_integrator.hpp)
+
+ private:
+  void integrate_trapezoidal(double dt, const VecX& v0, VecX& q, VecX& v);
+  void integrate_erk(double dt, const VecX& v0, VecX& q, VecX& v);
+
+  const BeamModel& model_;
+  DynamicOptions options_;
+  LinearizedBeam system_;
+  BlockTridiagonal lhs_;
+  VecX v0_, q_, v1_, work_;
+  std::unique_ptr<Erk> erk_;
+  long erk_rhs_evaluations_ = 0;
+};
+
+// Fold increments q (u*, θ* per node, in f) into the base: x ← x + u*, R ← exp(θ̃*) R
+// (eqs. 2.67–2.68 with the exact exponential instead of I + θ̃*). Returns max |θ*|.
+double update_base(const VecX& q, BeamState& state);
+
+}  // namespace fowtsim::beam

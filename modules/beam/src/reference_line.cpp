@@ -1,0 +1,134 @@
+#include "fowtsim/beam/reference_line.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+
+#include "fowtsim/core/rotation_vector.hpp"
+
+namespace fowtsim::beam {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Natural cubic spline y(u) through (u_i, y_i): second derivatives by the tridiagonal system.
+class CubicSpline {
+ public:
+  CubicSpline(std::vector<double> u, std::vector<double> y) : u_(std::move(u)), y_(std::move(y)) {
+    const std::size_t n = u_.size();
+    y2_.assign(n, 0.0);
+    if (n < 3) return;  // two points: the spline is the straight line
+    std::vector<double> c(n, 0.0);
+    for (std::size_t i = 1; i + 1 < n; ++i) {  // Thomas algorithm, natural ends y2 = 0
+      const double sig = (u_[i] - u_[i - 1]) / (u_[i + 1] - u_[i - 1]);
+      const double p = sig * y2_[i - 1] + 2.0;
+      y2_[i] = (sig - 1.0) / p;
+      const double dy = (y_[i + 1] - y_[i]) / (u_[i + 1] - u_[i]) - (y_[i] - y_[i - 1]) / (u_[i] - u_[i - 1]);
+      c[i] = (6.0 * dy / (u_[i + 1] - u_[i - 1]) - sig * c[i - 1]) / p;
+    }
+    for (std::size_t k = n - 1; k-- > 1;) y2_[k] = y2_[k] * y2_[k + 1] + c[k];
+  }
+
+  double operator()(double u) const {
+    const auto hi = std::clamp<std::size_t>(
+        std::upper_bound(u_.begin(), u_.end(), u) - u_.begin(), 1, u_.size() - 1);
+    const std::size_t lo = hi - 1;
+    const double h = u_[hi] - u_[lo];
+    const double a = (u_[hi] - u) / h, b = (u - u_[lo]) / h;
+    return a * y_[lo] + b * y_[hi] + ((a * a * a - a) * y2_[lo] + (b * b * b - b) * y2_[hi]) * h * h / 6.0;
+  }
+
+ private:
+  std::vector<double> u_, y_, y2_;
+};
+
+Mat3 twist_about_axis3(double twist_rad) {
+  return Eigen::AngleAxisd(twist_rad, Vec3::UnitZ()).toRotationMatrix();
+}
+
+}  // namespace
+
+Mat3 smallest_rotation(const Vec3& a, const Vec3& b) {
+  const Vec3 axis = a.cross(b);
+  const double s = axis.norm(), c = a.dot(b);
+  if (s < 1e-15) {
+    if (c > 0.0) return Mat3::Identity();
+    throw std::invalid_argument("smallest_rotation: opposite vectors have no unique rotation");
+  }
+  return rotation_matrix(std::atan2(s, c) / s * axis);
+}
+
+ReferenceLine::ReferenceLine(double length_m, Curve curve)
+    : length_m_(length_m), curve_(std::move(curve)) {
+  if (!(length_m_ > 0.0)) throw std::invalid_argument("ReferenceLine: length must be positive");
+}
+
+ReferenceLine ReferenceLine::straight(const Vec3& origin, const Mat3& frame0, double length,
+                                      std::function<double(double)> twist_rad) {
+  return ReferenceLine(length, [=](double s) {
+    return LinePoint{origin + s * frame0.col(2), frame0 * twist_about_axis3(twist_rad(s))};
+  });
+}
+
+ReferenceLine ReferenceLine::circular_arc(const Vec3& origin, const Mat3& frame0, double radius,
+                                          double angle) {
+  return ReferenceLine(radius * angle, [=](double s) {
+    const double phi = s / radius;  // turn about axis 2 that tilts axis 3 towards axis 1
+    const Mat3 turn = Eigen::AngleAxisd(phi, Vec3::UnitY()).toRotationMatrix();
+    const Vec3 local(radius * (1.0 - std::cos(phi)), 0.0, radius * std::sin(phi));
+    return LinePoint{origin + frame0 * local, frame0 * turn};
+  });
+}
+
+ReferenceLine ReferenceLine::through_key_points(const std::vector<Vec3>& points,
+                                                const std::vector<double>& twist_deg) {
+  const std::size_t n = points.size();
+  if (n < 2 || twist_deg.size() != n)
+    throw std::invalid_argument("through_key_points: need ≥ 2 points, one twist per point");
+  std::vector<double> u(n, 0.0);
+  for (std::size_t i = 1; i < n; ++i) u[i] = u[i - 1] + (points[i] - points[i - 1]).norm();
+  std::array<std::vector<double>, 3> coord;
+  std::vector<double> twist(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) coord[k].push_back(points[i][k]);
+    twist[i] = twist_deg[i] * kPi / 180.0;
+  }
+  auto splines = std::make_shared<std::array<CubicSpline, 4>>(std::array<CubicSpline, 4>{
+      CubicSpline(u, coord[0]), CubicSpline(u, coord[1]), CubicSpline(u, coord[2]),
+      CubicSpline(u, twist)});
+  auto position = [splines](double uu) {
+    return Vec3((*splines)[0](uu), (*splines)[1](uu), (*splines)[2](uu));
+  };
+  // Arclength table s(u) on a fine grid (chords of 1/200 of each key-point interval: the chord
+  // error of a smooth spline is O(h²)·curvature, below 1e-8 of the length for these beams).
+  constexpr int kSub = 200;
+  auto table_u = std::make_shared<std::vector<double>>();
+  auto table_s = std::make_shared<std::vector<double>>();
+  table_u->push_back(0.0);
+  table_s->push_back(0.0);
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    for (int k = 1; k <= kSub; ++k) {
+      const double uu = u[i] + (u[i + 1] - u[i]) * k / kSub;
+      table_s->push_back(table_s->back() + (position(uu) - position(table_u->back())).norm());
+      table_u->push_back(uu);
+    }
+  const double length = table_s->back();
+  const Vec3 t0 = (position(1e-6 * u.back()) - position(0.0)).normalized();
+  const Mat3 root = smallest_rotation(Vec3::UnitZ(), t0);
+  return ReferenceLine(length, [=](double s) {
+    const auto hi = std::clamp<std::size_t>(
+        std::upper_bound(table_s->begin(), table_s->end(), s) - table_s->begin(), 1,
+        table_s->size() - 1);
+    const double w = (s - (*table_s)[hi - 1]) / ((*table_s)[hi] - (*table_s)[hi - 1]);
+    const double uu = (*table_u)[hi - 1] + w * ((*table_u)[hi] - (*table_u)[hi - 1]);
+    const double h = 1e-7 * u.back();
+    const Vec3 tangent = (position(std::min(uu + h, u.back())) - position(std::max(uu - h, 0.0))).normalized();
+    const Mat3 frame = smallest_rotation(root.col(2), tangent) * root;
+    return LinePoint{position(uu), frame * twist_about_axis3((*splines)[3](uu))};
+  });
+}
+
+}  // namespace fowtsim::beam
