@@ -74,10 +74,16 @@ int main(int argc, char** argv) {
   std::string out_base, out_format;
   double tmax = 0;
   auto* run = app.add_subcommand("run", "run a scene deck");
-  run->add_option("deck", request.deck_path, "scene deck (YAML)")->required()->check(CLI::ExistingFile);
+  run->add_option("deck", request.deck_path, "scene deck (YAML), or a BeamDyn driver input (bd_driver.inp)")
+      ->required()
+      ->check(CLI::ExistingFile);
   run->add_option("-o,--output", out_base, "output path without extension (default runs/<deck name>)");
   run->add_option("--out-format", out_format, "output format")->check(CLI::IsMember({"h5", "out", "both"}));
   run->add_option("--tmax", tmax, "simulated time [s], overrides simulation.t_max_s")->check(CLI::PositiveNumber);
+  int segments = 0;
+  std::string integrator;
+  run->add_option("--segments", segments, "finite volumes per beam (BeamDyn cases; default 48)")->check(CLI::PositiveNumber);
+  run->add_option("--integrator", integrator, "beam step integrator")->check(CLI::IsMember({"generalized_alpha", "erk"}));
 
   std::string ref, test, tolerance_file;
   std::vector<std::string> channels;
@@ -116,6 +122,8 @@ int main(int argc, char** argv) {
       if (!out_base.empty()) request.output_base = out_base;
       if (!out_format.empty()) request.output_format = out_format;
       if (tmax > 0) request.t_max_s = tmax;
+      if (segments > 0) request.beam_segments = segments;
+      if (!integrator.empty()) request.beam_integrator = integrator;
       return run_command(request);
     }
     if (*compare) {

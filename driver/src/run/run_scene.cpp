@@ -1,5 +1,7 @@
 #include "run/run_scene.hpp"
 
+#include "beamdyn/beamdyn_run.hpp"
+
 #include "fowtsim/io/schema.hpp"
 #include "scenes/scene_schema.hpp"
 #include "scenes/toy_scene.hpp"
@@ -7,6 +9,7 @@
 namespace fowtsim::driver {
 
 RunReport run_scene(const RunRequest& request, const ProgressCallback& progress) {
+  if (is_beamdyn_driver_file(request.deck_path)) return run_beamdyn_case(request, progress);
   const io::ValidatedDeck deck = io::read_deck(scene_schema(), request.deck_path);
   // The toy oscillators are the only scene until the turbine modules land.
   return run_toy_scene(deck, request, progress);

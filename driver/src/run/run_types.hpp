@@ -13,6 +13,8 @@ struct RunRequest {
   std::optional<std::filesystem::path> output_base;  // -o: output path without extension
   std::optional<std::string> output_format;          // --out-format h5|out|both (overrides the deck)
   std::optional<double> t_max_s;                     // --tmax: overrides simulation.t_max_s [s]
+  std::optional<int> beam_segments;                  // --segments: finite volumes per beam
+  std::optional<std::string> beam_integrator;        // --integrator: generalized_alpha | erk
 };
 
 struct RunReport {

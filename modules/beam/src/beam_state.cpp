@@ -8,6 +8,7 @@ BeamState make_state(const BeamModel& model) {
     state.position_m.push_back(node.position_m);
     state.orientation.push_back(node.orientation);
     state.velocity.push_back(Vec6::Zero());
+    state.acceleration.push_back(Vec6::Zero());
   }
   return state;
 }

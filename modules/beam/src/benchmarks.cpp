@@ -65,7 +65,7 @@ BeamDefinition steel_strip() {
 
 double steel_strip_rollup_moment() {
   const double ei = 200e9 * std::pow(0.00331, 4) / 12.0;
-  return 4.0 * kPi * ei / 1.0;
+  return 2.0 * kPi * ei / 1.0;  // κ = M/EI = 2π/L: one full turn
 }
 
 }  // namespace fowtsim::beam::benchmarks

@@ -9,14 +9,14 @@
 namespace fowtsim::beam {
 
 Integrator integrator_from_name(const std::string& name) {
-  if (name == "trapezoidal") return Integrator::trapezoidal;
+  if (name == "generalized_alpha") return Integrator::generalized_alpha;
   if (name == "erk") return Integrator::erk;
-  throw InputError({"beam", std::nullopt, "integrator", "use trapezoidal or erk"},
+  throw InputError({"beam", std::nullopt, "integrator", "use generalized_alpha or erk"},
                    "unknown beam integrator '" + name + "'");
 }
 
 std::string integrator_name(Integrator integrator) {
-  return integrator == Integrator::trapezoidal ? "trapezoidal" : "erk";
+  return integrator == Integrator::generalized_alpha ? "generalized_alpha" : "erk";
 }
 
 DynamicStepper::DynamicStepper(const BeamModel& model, DynamicOptions options)
@@ -24,10 +24,7 @@ DynamicStepper::DynamicStepper(const BeamModel& model, DynamicOptions options)
   const int n = model.node_count();
   system_.resize(n);
   lhs_.resize(n);
-  v0_ = VecX::Zero(6 * n);
-  q_ = VecX::Zero(6 * n);
-  v1_ = VecX::Zero(6 * n);
-  work_ = VecX::Zero(6 * n);
+  for (VecX* v : {&v0_, &a0_, &q_, &v1_, &a1_, &work_, &product_}) *v = VecX::Zero(6 * n);
   if (options_.integrator == Integrator::erk)
     erk_ = std::make_unique<Erk>(6 * n, options_.erk_relative_tolerance,
                                  options_.erk_absolute_tolerance);
@@ -37,12 +34,15 @@ DynamicStepper::~DynamicStepper() = default;
 
 void DynamicStepper::step(const BeamInput& input, double dt, BeamState& state) {
   const int n = model_.node_count();
-  for (int i = 0; i < n; ++i) v0_.segment<6>(6 * i) = state.velocity[i];
+  for (int i = 0; i < n; ++i) {
+    v0_.segment<6>(6 * i) = state.velocity[i];
+    a0_.segment<6>(6 * i) = state.acceleration[i];
+  }
   linearize(model_, input, state, Inertia::included, system_);
-  if (options_.integrator == Integrator::trapezoidal)
-    integrate_trapezoidal(dt, v0_, q_, v1_);
+  if (options_.integrator == Integrator::generalized_alpha)
+    integrate_generalized_alpha(dt, state.acceleration_valid);
   else
-    integrate_erk(dt, v0_, q_, v1_);
+    integrate_erk(dt);
 
   const double t_end = state.time_s + dt;
   if (!q_.allFinite() || !v1_.allFinite())
@@ -56,36 +56,66 @@ void DynamicStepper::step(const BeamInput& input, double dt, BeamState& state) {
         fmt::format("an incremental rotation of {:.3g} rad in one step exceeds the small-angle "
                     "limit {:.3g} rad of the piecewise-linear scheme",
                     max_rot, options_.max_increment_rad));
-  for (int i = 0; i < n; ++i) state.velocity[i] = v1_.segment<6>(6 * i);
+  for (int i = 0; i < n; ++i) {
+    state.velocity[i] = v1_.segment<6>(6 * i);
+    state.acceleration[i] = a1_.segment<6>(6 * i);
+  }
+  state.acceleration_valid = options_.integrator == Integrator::generalized_alpha;
   state.time_s = t_end;
 }
 
-// Trapezoidal rule on the first-order form (q0 = 0): with v̄ = (v0 + v1)/2,
-//   M (v1 − v0)/Δt + C v̄ + K q1/2 = r,  q1 = Δt v̄
-//   ⇒ (2M/Δt + C + Δt/2 K) v̄ = r + 2M v0/Δt.
-// A-stable and second order; needs no initial acceleration, so nothing is carried between
-// steps but the velocities (eqs. 2.78–2.79).
-void DynamicStepper::integrate_trapezoidal(double dt, const VecX& v0, VecX& q, VecX& v) {
+// Generalized-α (Chung & Hulbert 1993) on M q̈ + C q̇ + K q = r with q0 = 0 (the base moved to
+// the end of the last step):
+//   M a_{1−αm} + C v_{1−αf} + K q_{1−αf} = r,  x_{1−α} = (1−α) x1 + α x0,
+//   q1 = Δt v0 + Δt² ((½−β) a0 + β a1),  v1 = v0 + Δt ((1−γ) a0 + γ a1),
+//   αm = (2ρ∞−1)/(ρ∞+1), αf = ρ∞/(ρ∞+1), γ = ½ − αm + αf, β = ¼ (1 − αm + αf)².
+// One linear solve for a1:
+//   [(1−αm) M + (1−αf) γ Δt C + (1−αf) β Δt² K] a1
+//     = r − αm M a0 − C (v0 + (1−αf)(1−γ) Δt a0) − (1−αf) K (Δt v0 + (½−β) Δt² a0).
+// Velocities and accelerations are resolved in f, so they carry over to the new base unchanged
+// (eqs. 2.78–2.79).
+void DynamicStepper::integrate_generalized_alpha(double dt, bool acceleration_ready) {
   const int n = model_.node_count();
-  lhs_ = system_.stiffness;  // same sizes: a copy without allocation
+  const double rho = options_.spectral_radius;
+  const double am = (2.0 * rho - 1.0) / (rho + 1.0), af = rho / (rho + 1.0);
+  const double gamma = 0.5 - am + af, beta = 0.25 * (1.0 - am + af) * (1.0 - am + af);
+
+  // Before the first step: the consistent acceleration M a0 = r − C v0 (q0 = 0).
+  if (!acceleration_ready) {
+    system_.damping.multiply(v0_, product_);
+    for (int i = 0; i < n; ++i)
+      a0_.segment<6>(6 * i) = system_.mass[i].partialPivLu().solve(
+          Vec6(system_.rhs.segment<6>(6 * i) - product_.segment<6>(6 * i)));
+  }
+
+  work_ = v0_ + ((1.0 - af) * (1.0 - gamma) * dt) * a0_;
+  system_.damping.multiply(work_, product_);
+  VecX& rhs = a1_;  // assembled in place, solved in place
+  rhs = system_.rhs - product_;
+  work_ = (dt * (1.0 - af)) * v0_ + ((0.5 - beta) * dt * dt * (1.0 - af)) * a0_;
+  system_.stiffness.multiply(work_, product_);
+  rhs -= product_;
+  for (int i = 0; i < n; ++i) rhs.segment<6>(6 * i) -= am * (system_.mass[i] * a0_.segment<6>(6 * i));
+
+  const double cm = 1.0 - am, cc = (1.0 - af) * gamma * dt, ck = (1.0 - af) * beta * dt * dt;
   for (int i = 0; i < n; ++i) {
-    lhs_.diag(i) = 0.5 * dt * lhs_.diag(i) + system_.damping.diag(i) + (2.0 / dt) * system_.mass[i];
+    lhs_.diag(i) = ck * system_.stiffness.diag(i) + cc * system_.damping.diag(i) + cm * system_.mass[i];
     if (i + 1 < n) {
-      lhs_.upper(i) = 0.5 * dt * lhs_.upper(i) + system_.damping.upper(i);
-      lhs_.lower(i) = 0.5 * dt * lhs_.lower(i) + system_.damping.lower(i);
+      lhs_.upper(i) = ck * system_.stiffness.upper(i) + cc * system_.damping.upper(i);
+      lhs_.lower(i) = ck * system_.stiffness.lower(i) + cc * system_.damping.lower(i);
     }
-    work_.segment<6>(6 * i) = system_.rhs.segment<6>(6 * i) + (2.0 / dt) * (system_.mass[i] * v0.segment<6>(6 * i));
   }
   if (!lhs_.factor())
     throw NumericalError({"beam", std::nullopt, "step matrix", "check the mass and inertia of the beam"},
                          "singular step matrix (zero mass or inertia?)");
-  lhs_.solve_in_place(work_);  // v̄
-  q = dt * work_;
-  v = 2.0 * work_ - v0;
+  lhs_.solve_in_place(a1_);
+  q_ = dt * v0_ + (dt * dt) * ((0.5 - beta) * a0_ + beta * a1_);
+  v1_ = v0_ + dt * ((1.0 - gamma) * a0_ + gamma * a1_);
 }
 
-void DynamicStepper::integrate_erk(double dt, const VecX& v0, VecX& q, VecX& v) {
-  erk_->integrate(system_, dt, v0, q, v);
+void DynamicStepper::integrate_erk(double dt) {
+  erk_->integrate(system_, dt, v0_, q_, v1_);
+  a1_.setZero();
   erk_rhs_evaluations_ = erk_->rhs_evaluations();
 }
 

@@ -31,7 +31,7 @@ DynamicStepper::Erk::Erk(int n, double rtol, double atol) : dofs(n), force(VecX:
   ERKStepSetTableNum(memory, ARKODE_DORMAND_PRINCE_7_4_5);
   ERKStepSStolerances(memory, rtol, atol);
   ERKStepSetUserData(memory, this);
-  ERKStepSetMaxNumSteps(memory, 1000000);
+  ERKStepSetMaxNumSteps(memory, 100000);
   mass_lu.resize(n / 6);
 }
 

@@ -1,18 +1,16 @@
 #include "fowtsim/beam/reference_line.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
 
-#include "fowtsim/core/rotation_vector.hpp"
 
 namespace fowtsim::beam {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Natural cubic spline y(u) through (u_i, y_i): second derivatives by the tridiagonal system.
 class CubicSpline {
@@ -51,16 +49,6 @@ Mat3 twist_about_axis3(double twist_rad) {
 
 }  // namespace
 
-Mat3 smallest_rotation(const Vec3& a, const Vec3& b) {
-  const Vec3 axis = a.cross(b);
-  const double s = axis.norm(), c = a.dot(b);
-  if (s < 1e-15) {
-    if (c > 0.0) return Mat3::Identity();
-    throw std::invalid_argument("smallest_rotation: opposite vectors have no unique rotation");
-  }
-  return rotation_matrix(std::atan2(s, c) / s * axis);
-}
-
 ReferenceLine::ReferenceLine(double length_m, Curve curve)
     : length_m_(length_m), curve_(std::move(curve)) {
   if (!(length_m_ > 0.0)) throw std::invalid_argument("ReferenceLine: length must be positive");
@@ -83,52 +71,50 @@ ReferenceLine ReferenceLine::circular_arc(const Vec3& origin, const Mat3& frame0
   });
 }
 
+ReferenceLine ReferenceLine::parametric(std::function<Vec3(double)> position,
+                                        std::function<double(double)> twist_rad, double u0,
+                                        double u1) {
+  constexpr int kChords = 4000;
+  auto table_u = std::make_shared<std::vector<double>>(kChords + 1);
+  auto table_s = std::make_shared<std::vector<double>>(kChords + 1, 0.0);
+  Vec3 previous = position(u0);
+  for (int k = 0; k <= kChords; ++k) {
+    const double u = u0 + (u1 - u0) * k / kChords;
+    const Vec3 p = position(u);
+    (*table_u)[k] = u;
+    if (k > 0) (*table_s)[k] = (*table_s)[k - 1] + (p - previous).norm();
+    previous = p;
+  }
+  const double h = 1e-7 * (u1 - u0);
+  return ReferenceLine(table_s->back(), [=](double s) {
+    const auto hi = std::clamp<std::size_t>(
+        std::upper_bound(table_s->begin(), table_s->end(), s) - table_s->begin(), 1, kChords);
+    const double w = (s - (*table_s)[hi - 1]) / ((*table_s)[hi] - (*table_s)[hi - 1]);
+    const double u = (*table_u)[hi - 1] + w * ((*table_u)[hi] - (*table_u)[hi - 1]);
+    const Vec3 t = (position(std::min(u + h, u1)) - position(std::max(u - h, u0))).normalized();
+    const double a = twist_rad(u);
+    const Vec3 e1 = Vec3(std::cos(a), std::sin(a), -(t.x() * std::cos(a) + t.y() * std::sin(a)) / t.z()).normalized();
+    Mat3 frame;
+    frame << e1, t.cross(e1), t;
+    return LinePoint{position(u), frame};
+  });
+}
+
 ReferenceLine ReferenceLine::through_key_points(const std::vector<Vec3>& points,
-                                                const std::vector<double>& twist_deg) {
+                                                const std::vector<double>& twist_rad) {
   const std::size_t n = points.size();
-  if (n < 2 || twist_deg.size() != n)
+  if (n < 2 || twist_rad.size() != n)
     throw std::invalid_argument("through_key_points: need ≥ 2 points, one twist per point");
   std::vector<double> u(n, 0.0);
   for (std::size_t i = 1; i < n; ++i) u[i] = u[i - 1] + (points[i] - points[i - 1]).norm();
   std::array<std::vector<double>, 3> coord;
-  std::vector<double> twist(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int k = 0; k < 3; ++k) coord[k].push_back(points[i][k]);
-    twist[i] = twist_deg[i] * kPi / 180.0;
-  }
+  for (const Vec3& p : points)
+    for (int k = 0; k < 3; ++k) coord[k].push_back(p[k]);
   auto splines = std::make_shared<std::array<CubicSpline, 4>>(std::array<CubicSpline, 4>{
       CubicSpline(u, coord[0]), CubicSpline(u, coord[1]), CubicSpline(u, coord[2]),
-      CubicSpline(u, twist)});
-  auto position = [splines](double uu) {
-    return Vec3((*splines)[0](uu), (*splines)[1](uu), (*splines)[2](uu));
-  };
-  // Arclength table s(u) on a fine grid (chords of 1/200 of each key-point interval: the chord
-  // error of a smooth spline is O(h²)·curvature, below 1e-8 of the length for these beams).
-  constexpr int kSub = 200;
-  auto table_u = std::make_shared<std::vector<double>>();
-  auto table_s = std::make_shared<std::vector<double>>();
-  table_u->push_back(0.0);
-  table_s->push_back(0.0);
-  for (std::size_t i = 0; i + 1 < n; ++i)
-    for (int k = 1; k <= kSub; ++k) {
-      const double uu = u[i] + (u[i + 1] - u[i]) * k / kSub;
-      table_s->push_back(table_s->back() + (position(uu) - position(table_u->back())).norm());
-      table_u->push_back(uu);
-    }
-  const double length = table_s->back();
-  const Vec3 t0 = (position(1e-6 * u.back()) - position(0.0)).normalized();
-  const Mat3 root = smallest_rotation(Vec3::UnitZ(), t0);
-  return ReferenceLine(length, [=](double s) {
-    const auto hi = std::clamp<std::size_t>(
-        std::upper_bound(table_s->begin(), table_s->end(), s) - table_s->begin(), 1,
-        table_s->size() - 1);
-    const double w = (s - (*table_s)[hi - 1]) / ((*table_s)[hi] - (*table_s)[hi - 1]);
-    const double uu = (*table_u)[hi - 1] + w * ((*table_u)[hi] - (*table_u)[hi - 1]);
-    const double h = 1e-7 * u.back();
-    const Vec3 tangent = (position(std::min(uu + h, u.back())) - position(std::max(uu - h, 0.0))).normalized();
-    const Mat3 frame = smallest_rotation(root.col(2), tangent) * root;
-    return LinePoint{position(uu), frame * twist_about_axis3((*splines)[3](uu))};
-  });
+      CubicSpline(u, twist_rad)});
+  return parametric([splines](double uu) { return Vec3((*splines)[0](uu), (*splines)[1](uu), (*splines)[2](uu)); },
+                    [splines](double uu) { return (*splines)[3](uu); }, 0.0, u.back());
 }
 
 }  // namespace fowtsim::beam

@@ -65,6 +65,7 @@ StaticReport solve_static(const BeamModel& model, const BeamInput& input, BeamSt
                       options.max_iterations, step, options.load_steps, report.final_increment));
   }
   for (Vec6& v : state.velocity) v.setZero();
+  state.acceleration_valid = false;
   return report;
 }
 

@@ -23,7 +23,7 @@ inline Station diagonal_station(double eta, const Vec6& k, double m, const Vec3&
 inline BeamDefinition general_beam() {
   const ReferenceLine line = ReferenceLine::through_key_points(
       {Vec3(0, 0, 0), Vec3(0.3, 0.1, 3.0), Vec3(1.2, 0.3, 6.0), Vec3(2.5, 0.2, 8.5)},
-      {10.0, 25.0, 40.0, 60.0});
+      {0.17, 0.44, 0.70, 1.05});  // twist [rad]
   BeamDefinition def{line, {}};
   for (double eta : {0.0, 0.5, 1.0}) {
     Eigen::Matrix<double, 6, 6> a;

@@ -35,6 +35,8 @@ struct BeamState {
   std::vector<Vec3> position_m;   // x_n: base position of node n, in f [m]
   std::vector<Mat3> orientation;  // R_n: local frame of node n (columns in f)
   std::vector<Vec6> velocity;     // [ẋ_n; ω_n] relative to f, in f [m/s; rad/s]
+  std::vector<Vec6> acceleration;  // generalized-α's algorithmic acceleration, in f [m/s²; rad/s²]
+  bool acceleration_valid = false;  // false: solved from M a = r − C v before the first step
   double last_increment_rad = 0.0;  // largest |θ*_n| of the last step (small-angle check)
 };
 

@@ -24,6 +24,31 @@ BeamDefinition curved_beam();
 // §2.5.1 time-step study: the 1 m steel strip 3.31 × 3.31 mm, E 200 GPa, G 79.3 GPa,
 // ρ 7850 kg/m³, stiffness damping 1e-6 s, rolled up by its tip moment.
 BeamDefinition steel_strip();
-double steel_strip_rollup_moment();  // 4π EI / L: the moment that closes the circle [N·m]
+double steel_strip_rollup_moment();  // 2π EI / L (= 4π for EI ≈ 2): closes the circle [N·m]
+
+}  // namespace fowtsim::beam::benchmarks
+
+#include <vector>
+
+#include "fowtsim/beam/solvers.hpp"
+
+namespace fowtsim::beam::benchmarks {
+
+// One row of the seed's Table 2.1: node positions at t_end with step dt compared with a reference
+// run at a much smaller step.
+struct TimeStepRow {
+  double dt_s = 0.0;
+  bool failed = false;          // the step broke the small-angle limit or diverged
+  double rms_vs_reference = 0.0;  // RMS over nodes of |x_dt − x_ref| [m]
+  double relative = 0.0;        // the same over RMS |x_ref − x_undeformed|
+  double rms_vs_half = 0.0;     // RMS |x_dt − x_dt/2| [m] (NaN where dt/2 failed)
+  double order = 0.0;           // log2 of successive rms_vs_half ratios (NaN on the last row)
+  double wall_s = 0.0;          // wall time of the run at dt
+};
+
+// Table 2.1 for the steel strip under the suddenly applied closing moment, t_end = 0.0064 s.
+// dts descending, each halving the previous; reference_dt much smaller (seed: 5e-6 s).
+std::vector<TimeStepRow> strip_time_step_study(int segments, const DynamicOptions& options,
+                                               const std::vector<double>& dts, double reference_dt);
 
 }  // namespace fowtsim::beam::benchmarks

@@ -39,19 +39,22 @@ class ReferenceLine {
   static ReferenceLine circular_arc(const Vec3& origin_m, const Mat3& frame0, double radius_m,
                                     double angle_rad);
 
-  // Smooth curve through key points (BeamDyn's kp_xr, kp_yr, kp_zr, initial_twist): a cubic
-  // spline of each coordinate and of the twist over cumulative chord length, re-parametrised by
-  // arclength. The frame turns the root axes (global z → tangent) by the smallest rotation,
-  // then twists about the tangent.
+  // A curve position(u), u in [u0, u1], re-parametrised by arclength (chords of (u1−u0)/4000:
+  // the chord error of a smooth curve is O(h²)·curvature, far below 1e-8 of the length here).
+  // Local frame by BeamDyn's rule: axis 3 the unit tangent t, axis 1 the unit vector along
+  // (cos α, sin α, −(t_x cos α + t_y sin α)/t_z) with α = twist(u), axis 2 = axis 3 × axis 1.
+  // For a line along z this is a rotation by α about z. Needs t_z > 0 everywhere.
+  static ReferenceLine parametric(std::function<Vec3(double u)> position,
+                                  std::function<double(double u)> twist_rad, double u0, double u1);
+
+  // Natural cubic splines of each coordinate and of the twist (rad) through key points, over
+  // cumulative chord length; frames by the rule of parametric().
   static ReferenceLine through_key_points(const std::vector<Vec3>& points_m,
-                                          const std::vector<double>& twist_deg);
+                                          const std::vector<double>& twist_rad);
 
  private:
   double length_m_;
   Curve curve_;
 };
-
-// The rotation that takes unit vector a to unit vector b about a × b (identity if a = b).
-Mat3 smallest_rotation(const Vec3& a, const Vec3& b);
 
 }  // namespace fowtsim::beam

@@ -1,0 +1,27 @@
+#pragma once
+// BeamDyn's output channels (names, units, frames as the BeamDyn driver writes them), computed
+// from the beam's outputs. r: the rotating root frame (the beam's floating frame f); l: the
+// deflected local section frame.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fowtsim/beam/beam_model.hpp"
+#include "fowtsim/beam/beam_outputs.hpp"
+#include "fowtsim/beam/beam_state.hpp"
+#include "fowtsim/core/channels.hpp"
+
+namespace fowtsim::driver {
+
+// The channels we can write, in BeamDyn's naming: RootF/M{x,y,z}r, TipTD/TipRD{x,y,z}r,
+// N1F/M{x,y,z}l.
+std::vector<ChannelInfo> beamdyn_channels();
+
+// Index into beamdyn_channels() of a BeamDyn channel name (case-insensitive), if we support it.
+std::optional<std::size_t> find_beamdyn_channel(const std::string& name);
+
+// Values of all beamdyn_channels(), in that order.
+std::vector<double> beamdyn_channel_values(const beam::BeamModel& model, const beam::BeamState& state,
+                                           const beam::BeamOutputs& out);
+
+}  // namespace fowtsim::driver

@@ -1,0 +1,135 @@
+#include "beamdyn/beamdyn_run.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "beamdyn/beamdyn_channels.hpp"
+#include "beamdyn/beamdyn_setup.hpp"
+#include "fowtsim/beam/beam_outputs.hpp"
+#include "fowtsim/beam/solvers.hpp"
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/core/version.hpp"
+#include "run/output_set.hpp"
+
+namespace fowtsim::driver {
+namespace {
+
+// BeamDyn's static driver writes the undeformed row at t0 and the converged solution at the next
+// nine steps (t0 + dt … t0 + 9 dt); we write the same rows.
+constexpr int kStaticRows = 9;
+
+// Static solve with BeamDyn's load-bisection fallback: all load at once, then halving the load
+// increment (doubling the load steps) when the iteration fails.
+void solve_static_robustly(const beam::BeamModel& model, const beam::BeamInput& input, beam::BeamState& state) {
+  const beam::BeamState start = state;
+  for (int steps = 1;; steps *= 2) {
+    beam::StaticOptions opt;
+    opt.load_steps = steps;
+    try {
+      beam::solve_static(model, input, state, opt);
+      return;
+    } catch (const NumericalError&) {
+      if (steps >= 1024) throw;
+      state = start;
+    }
+  }
+}
+
+}  // namespace
+
+bool is_beamdyn_driver_file(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string first;
+  std::getline(in, first);
+  std::transform(first.begin(), first.end(), first.begin(), [](unsigned char c) { return std::toupper(c); });
+  return first.find("BEAMDYN DRIVER") != std::string::npos;
+}
+
+RunReport run_beamdyn_case(const RunRequest& request, const ProgressCallback& progress) {
+  BeamDynSetup setup = beamdyn_setup(io::read_beamdyn_driver(request.deck_path));
+  if (request.t_max_s) setup.t_final_s = setup.t_initial_s + *request.t_max_s;
+  const int segments = request.beam_segments.value_or(48);
+  const beam::BeamModel model = beam::discretise(setup.definition, segments);
+
+  RunReport report;
+  report.coupling = "beam only";
+  const auto all = beamdyn_channels();
+  std::vector<std::size_t> picked;
+  for (const std::string& name : setup.out_list) {
+    if (const auto i = find_beamdyn_channel(name)) {
+      picked.push_back(*i);
+    } else {
+      report.warnings.push_back(fmt::format("BeamDyn channel '{}' is not available and is not written", name));
+    }
+  }
+  if (setup.out_list.empty())
+    for (std::size_t i = 0; i < all.size(); ++i) picked.push_back(i);
+  std::vector<ChannelInfo> written;
+  for (std::size_t i : picked) written.push_back(all[i]);
+
+  OutputSet outputs(request.output_base.value_or(std::filesystem::path("runs") / request.deck_path.parent_path().filename()),
+                    request.output_format.value_or("h5"));
+  report.outputs = outputs.paths();
+  io::RunMetadata metadata;
+  metadata.version = kVersion;
+  metadata.deck_path = request.deck_path.string();
+  metadata.dt_s = setup.dt_s;
+  metadata.dt_coupling_s = setup.dt_s;
+  beam::DynamicOptions options;
+  options.integrator = beam::integrator_from_name(request.beam_integrator.value_or("generalized_alpha"));
+  options.spectral_radius = setup.spectral_radius;
+  metadata.extra = {{"scene", "beamdyn_driver"},
+                    {"beam_segments", std::to_string(segments)},
+                    {"beam_integrator", beam::integrator_name(options.integrator)}};
+  outputs.begin(written, metadata);
+
+  beam::BeamState state = beam::make_state(model);
+  std::vector<double> row(picked.size());
+  auto write_row = [&](double t, bool zero_loads) {
+    beam::BeamOutputs out = beam::beam_outputs(model, state);
+    if (zero_loads) out.root_load.setZero();  // BeamDyn's t0 row before any solve
+    const std::vector<double> values = beamdyn_channel_values(model, state, out);
+    for (std::size_t k = 0; k < picked.size(); ++k) row[k] = values[picked[k]];
+    outputs.append(t, row);
+  };
+
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  double t = setup.t_initial_s;
+  try {
+    if (!setup.dynamic) {
+      write_row(t, true);
+      solve_static_robustly(model, beamdyn_input(setup, model, state, t), state);
+      for (int k = 1; k <= kStaticRows; ++k) write_row(setup.t_initial_s + k * setup.dt_s, false);
+      t = setup.t_initial_s + kStaticRows * setup.dt_s;
+      report.large_steps = 1;
+    } else {
+      if (setup.quasi_static_init) solve_static_robustly(model, beamdyn_input(setup, model, state, t), state);
+      write_row(t, false);
+      const long steps = std::lround((setup.t_final_s - setup.t_initial_s) / setup.dt_s);
+      beam::DynamicStepper stepper(model, options);
+      for (long k = 1; k <= steps; ++k) {
+        const double t0 = setup.t_initial_s + (k - 1) * setup.dt_s;
+        stepper.step(beamdyn_input(setup, model, state, t0 + 0.5 * setup.dt_s), setup.dt_s, state);
+        t = setup.t_initial_s + k * setup.dt_s;
+        write_row(t, false);
+        if (progress) progress(t, setup.t_final_s);
+      }
+      report.large_steps = steps;
+    }
+  } catch (const NumericalError& e) {
+    outputs.finish({elapsed(), std::string("failed: ") + e.what(), t});
+    throw;
+  }
+  report.wall_s = elapsed();
+  report.simulated_s = t;
+  outputs.finish({report.wall_s, "completed", t});
+  return report;
+}
+
+}  // namespace fowtsim::driver

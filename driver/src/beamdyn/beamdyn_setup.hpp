@@ -1,0 +1,47 @@
+#pragma once
+// A BeamDyn stand-alone driver case (bd_driver.inp → primary → blade properties) translated into
+// the beam module's terms, so `fowtsim run bd_driver.inp` reruns a BeamDyn case unchanged.
+//
+// BeamDyn semantics reproduced (OpenFAST BeamDyn driver; notes in driver/README.md):
+//  * the reference line is BeamDyn's: per member a least-squares polynomial in z of degree
+//    min(order_elem, key points − 1) through the key points, end points enforced; the section
+//    frame turns by −initial_twist about the tangent (BeamDyn negates the input twist);
+//  * the root sits at GlbPos with axes GlbDCMᵀ and turns at the constant angular velocity RootVel
+//    (global axes) about the global origin; the beam starts undeformed, moving rigidly with it;
+//  * gravity, DistrLoad, TipLoad and point loads are dead loads fixed in the global frame;
+//  * outputs are in the rotating root frame r, which is the floating frame f of the beam module.
+#include <string>
+#include <vector>
+
+#include "fowtsim/beam/beam_model.hpp"
+#include "fowtsim/beam/beam_state.hpp"
+#include "fowtsim/io/beamdyn_input.hpp"
+
+namespace fowtsim::driver {
+
+struct BeamDynSetup {
+  beam::BeamDefinition definition;
+  Mat3 root_orientation0 = Mat3::Identity();  // root axes at t0 (columns, global) = GlbDCMᵀ
+  Vec3 root_position_m = Vec3::Zero();        // GlbPos at t0, global [m]
+  Vec3 angular_velocity_rad_s = Vec3::Zero(); // RootVel(4..6), global [rad/s]
+  Vec3 gravity_m_s2 = Vec3::Zero();           // global [m/s²]
+  Vec6 distributed_load = Vec6::Zero();       // global, per unit length [N/m, N·m/m]
+  Vec6 tip_load = Vec6::Zero();               // global [N, N·m]
+  std::vector<io::BeamDynPointLoad> point_loads;  // global
+  bool dynamic = false;
+  bool quasi_static_init = false;
+  double t_initial_s = 0.0, t_final_s = 0.0, dt_s = 0.0;
+  double spectral_radius = 0.0;               // rhoinf
+  std::vector<std::string> out_list;
+};
+
+// Throws InputError naming the BeamDyn file and key for what cannot be represented.
+BeamDynSetup beamdyn_setup(const io::BeamDynCase& bd);
+
+// Frame kinematics and dead loads at time t, resolved in the rotating root frame. Point loads
+// act at their reference-line point, transferred to the nearest node with the moment of the arm in
+// the current configuration.
+beam::BeamInput beamdyn_input(const BeamDynSetup& setup, const beam::BeamModel& model,
+                              const beam::BeamState& state, double t_s);
+
+}  // namespace fowtsim::driver
