@@ -115,7 +115,7 @@ RunReport run_beamdyn_case(const RunRequest& request, const ProgressCallback& pr
       beam::DynamicStepper stepper(model, options);
       for (long k = 1; k <= steps; ++k) {
         const double t0 = setup.t_initial_s + (k - 1) * setup.dt_s;
-        stepper.step(beamdyn_input(setup, model, state, t0 + 0.5 * setup.dt_s), setup.dt_s, state);
+        stepper.step(beamdyn_input(setup, model, state, t0 + stepper.input_time_fraction() * setup.dt_s), setup.dt_s, state);
         t = setup.t_initial_s + k * setup.dt_s;
         write_row(t, false);
         if (progress) progress(t, setup.t_final_s);

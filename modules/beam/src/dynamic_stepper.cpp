@@ -32,6 +32,11 @@ DynamicStepper::DynamicStepper(const BeamModel& model, DynamicOptions options)
 
 DynamicStepper::~DynamicStepper() = default;
 
+double DynamicStepper::input_time_fraction() const {
+  if (options_.integrator == Integrator::erk) return 0.5;
+  return 1.0 - options_.spectral_radius / (options_.spectral_radius + 1.0);  // 1 − αf
+}
+
 void DynamicStepper::step(const BeamInput& input, double dt, BeamState& state) {
   const int n = model_.node_count();
   for (int i = 0; i < n; ++i) {

@@ -51,7 +51,7 @@ RotatingRun run_rotating(int segments, double dt, double spin) {
   const long per_sample = std::lround(kRotatingSample / dt);
   const long steps = std::lround(kRotatingEnd / dt);
   for (long k = 0; k < steps; ++k) {
-    stepper.step(benchmarks::rotating_beam_input(model, (k + 0.5) * dt, spin), dt, state);
+    stepper.step(benchmarks::rotating_beam_input(model, (k + stepper.input_time_fraction()) * dt, spin), dt, state);
     if ((k + 1) % per_sample == 0) run.tip.push_back(beam_outputs(model, state).tip_displacement_m);
   }
   return run;
@@ -79,7 +79,7 @@ std::vector<double> run_kane(int segments, double dt) {
   std::vector<double> tip{0.0};
   BeamInput input;
   for (long k = 0; k < steps; ++k) {
-    input.frame = benchmarks::kane_frame((k + 0.5) * dt);
+    input.frame = benchmarks::kane_frame((k + stepper.input_time_fraction()) * dt);
     stepper.step(input, dt, state);
     if ((k + 1) % per_sample == 0) tip.push_back(beam_outputs(model, state).tip_displacement_m.y());
   }

@@ -62,9 +62,15 @@ class DynamicStepper {
   DynamicStepper(const DynamicStepper&) = delete;
   DynamicStepper& operator=(const DynamicStepper&) = delete;
 
-  // Advance state by dt under `input` (taken as the mid-step value). Throws NumericalError on a
-  // non-finite result, a singular system or an increment above max_increment_rad.
+  // Advance state by dt under `input`, evaluated at t + input_time_fraction()·dt. Throws
+  // NumericalError on a non-finite result, a singular system or an increment above
+  // max_increment_rad.
   void step(const BeamInput& input, double dt, BeamState& state);
+
+  // Where in the step the input must be sampled to keep second order: generalized-α balances
+  // forces at t + (1 − αf) Δt (= t + Δt for ρ∞ = 0); the erk integrator holds the input constant
+  // over the step, best taken at the middle.
+  double input_time_fraction() const;
 
   const LinearizedBeam& system() const { return system_; }
   long erk_rhs_evaluations() const { return erk_rhs_evaluations_; }
