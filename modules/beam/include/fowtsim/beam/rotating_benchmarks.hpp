@@ -31,7 +31,7 @@ inline constexpr double kRotatingBeamTipForce = -5.0e6;          // F_y at the t
 inline constexpr double kRotatingBeamLoadAmplitude = -48.13e3;   // W [N/m]
 inline constexpr double kRotatingBeamLoadFrequency = 25.6;       // ω [rad/s]
 
-// The §2.5.3 input at time t (pass the mid-step time to DynamicStepper::step): frame spinning at
+// The §2.5.3 input at time t (sample it at DynamicStepper::input_time_fraction() of the step): frame spinning at
 // spin_rad_s about f's y (origin on the axis, no gravity), tip force kRotatingBeamTipForce along
 // y, and W sin(ωt)·Δs_n along y on every segment n. spin_rad_s = 0 gives the non-rotating case.
 BeamInput rotating_beam_input(const BeamModel& model, double time_s,
