@@ -99,10 +99,13 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> cases;
   auto* verify = app.add_subcommand("verify", "run verification cases against analytic or published answers");
-  verify->add_option("cases", cases, "cases (default all): coupling");
+  verify->add_option("cases", cases, "cases (default all): coupling, beam-rollup, beam-curved, beam-timestep, beam-beamdyn, beam-frequencies");
+  std::string shared_dir = "../shared";
+  verify->add_option("--shared", shared_dir, "directory holding reference/ (default ../shared)");
   std::vector<std::string> bench_cases;
   auto* bench = app.add_subcommand("bench", "benchmark run time against error");
-  bench->add_option("cases", bench_cases, "cases (default all): coupling");
+  bench->add_option("cases", bench_cases, "cases (default all): coupling, beam");
+  bench->add_option("--shared", shared_dir, "directory holding reference/ (default ../shared)");
 
   try {
     app.parse(argc, argv);
@@ -130,6 +133,7 @@ int main(int argc, char** argv) {
       return compare_command(ref, test, channels, rtol_opt->count() ? std::optional(rtol) : std::nullopt,
                              atol_opt->count() ? std::optional(atol) : std::nullopt, tolerance_file);
     }
+    set_shared_dir(shared_dir);
     if (*verify) return verify_command(cases);
     if (*bench) return bench_command(bench_cases);
   } catch (const NumericalError& e) {

@@ -11,21 +11,37 @@
 namespace fowtsim::driver {
 
 std::vector<VerificationRow> verify_coupling(std::FILE* out);  // verify_coupling.cpp
+std::vector<VerificationRow> verify_beam_rollup(std::FILE* out);  // verify_beam.cpp
+std::vector<VerificationRow> verify_beam_curved(std::FILE* out);
+std::vector<VerificationRow> verify_beam_timestep(std::FILE* out);
+std::vector<VerificationRow> verify_beam_beamdyn(std::FILE* out);
+std::vector<VerificationRow> verify_beam_frequencies(std::FILE* out);
+void bench_beam(std::FILE* out);
 
-std::vector<std::string> verification_case_names() { return {"coupling"}; }
+std::vector<std::string> verification_case_names() {
+  return {"coupling", "beam-rollup", "beam-curved", "beam-timestep", "beam-beamdyn", "beam-frequencies"};
+}
 
 std::vector<VerificationRow> run_verification_case(const std::string& name, std::FILE* out) {
   if (name == "coupling") return verify_coupling(out);
-  throw InputError({"verify", {}, name, "known cases: coupling"}, fmt::format("unknown verification case '{}'", name));
+  if (name == "beam-rollup") return verify_beam_rollup(out);
+  if (name == "beam-curved") return verify_beam_curved(out);
+  if (name == "beam-timestep") return verify_beam_timestep(out);
+  if (name == "beam-beamdyn") return verify_beam_beamdyn(out);
+  if (name == "beam-frequencies") return verify_beam_frequencies(out);
+  std::string known;
+  for (const std::string& n : verification_case_names()) known += (known.empty() ? "" : ", ") + n;
+  throw InputError({"verify", {}, name, "known cases: " + known}, fmt::format("unknown verification case '{}'", name));
 }
 
-std::vector<std::string> benchmark_case_names() { return {"coupling"}; }
+std::vector<std::string> benchmark_case_names() { return {"coupling", "beam"}; }
 
 // Wall time against error for each coupling mode over 200 s of the toy problem. Times are from
 // this one run on this machine; compare them as ratios.
 void run_benchmark_case(const std::string& name, std::FILE* out) {
+  if (name == "beam") return bench_beam(out);
   if (name != "coupling") {
-    throw InputError({"bench", {}, name, "known cases: coupling"}, fmt::format("unknown benchmark case '{}'", name));
+    throw InputError({"bench", {}, name, "known cases: coupling, beam"}, fmt::format("unknown benchmark case '{}'", name));
   }
   const ToyProblem problem = study_problem();
   constexpr double kTmax = 200.0;
