@@ -34,10 +34,8 @@ std::optional<std::size_t> find_beamdyn_channel(const std::string& name) {
   return std::nullopt;
 }
 
-std::vector<double> beamdyn_channel_values(const beam::BeamModel& model, const beam::BeamState&,
-                                           const beam::BeamOutputs& out) {
-  std::vector<double> v;
-  v.reserve(18);
+void beamdyn_channel_values(const beam::BeamModel& model, const beam::BeamOutputs& out, std::vector<double>& v) {
+  v.clear();
   for (int k = 0; k < 6; ++k) v.push_back(out.root_load[k]);
   for (int k = 0; k < 3; ++k) v.push_back(out.tip_displacement_m[k]);
   for (int k = 0; k < 3; ++k) v.push_back(out.tip_rotation_wm[k]);
@@ -46,7 +44,6 @@ std::vector<double> beamdyn_channel_values(const beam::BeamModel& model, const b
   const Vec3 f = rt * out.root_load.head<3>(), m = rt * out.root_load.tail<3>();
   for (int k = 0; k < 3; ++k) v.push_back(f[k]);
   for (int k = 0; k < 3; ++k) v.push_back(m[k]);
-  return v;
 }
 
 }  // namespace fowtsim::driver

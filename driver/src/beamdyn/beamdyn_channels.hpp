@@ -20,8 +20,7 @@ std::vector<ChannelInfo> beamdyn_channels();
 // Index into beamdyn_channels() of a BeamDyn channel name (case-insensitive), if we support it.
 std::optional<std::size_t> find_beamdyn_channel(const std::string& name);
 
-// Values of all beamdyn_channels(), in that order.
-std::vector<double> beamdyn_channel_values(const beam::BeamModel& model, const beam::BeamState& state,
-                                           const beam::BeamOutputs& out);
+// Values of all beamdyn_channels(), in that order, into `values` (resized once).
+void beamdyn_channel_values(const beam::BeamModel& model, const beam::BeamOutputs& out, std::vector<double>& values);
 
 }  // namespace fowtsim::driver

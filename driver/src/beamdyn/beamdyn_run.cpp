@@ -89,11 +89,13 @@ RunReport run_beamdyn_case(const RunRequest& request, const ProgressCallback& pr
   outputs.begin(written, metadata);
 
   beam::BeamState state = beam::make_state(model);
-  std::vector<double> row(picked.size());
+  beam::BeamInput input;
+  std::vector<double> row(picked.size()), values;
+  values.reserve(all.size());
   auto write_row = [&](double t, bool zero_loads) {
     beam::BeamOutputs out = beam::beam_outputs(model, state);
     if (zero_loads) out.root_load.setZero();  // BeamDyn's t0 row before any solve
-    const std::vector<double> values = beamdyn_channel_values(model, state, out);
+    beamdyn_channel_values(model, out, values);
     for (std::size_t k = 0; k < picked.size(); ++k) row[k] = values[picked[k]];
     outputs.append(t, row);
   };
@@ -104,18 +106,23 @@ RunReport run_beamdyn_case(const RunRequest& request, const ProgressCallback& pr
   try {
     if (!setup.dynamic) {
       write_row(t, true);
-      solve_static_robustly(model, beamdyn_input(setup, model, state, t), state);
+      beamdyn_input(setup, model, state, t, input);
+      solve_static_robustly(model, input, state);
       for (int k = 1; k <= kStaticRows; ++k) write_row(setup.t_initial_s + k * setup.dt_s, false);
       t = setup.t_initial_s + kStaticRows * setup.dt_s;
       report.large_steps = 1;
     } else {
-      if (setup.quasi_static_init) solve_static_robustly(model, beamdyn_input(setup, model, state, t), state);
+      if (setup.quasi_static_init) {
+        beamdyn_input(setup, model, state, t, input);
+        solve_static_robustly(model, input, state);
+      }
       write_row(t, false);
       const long steps = std::lround((setup.t_final_s - setup.t_initial_s) / setup.dt_s);
       beam::DynamicStepper stepper(model, options);
       for (long k = 1; k <= steps; ++k) {
         const double t0 = setup.t_initial_s + (k - 1) * setup.dt_s;
-        stepper.step(beamdyn_input(setup, model, state, t0 + stepper.input_time_fraction() * setup.dt_s), setup.dt_s, state);
+        beamdyn_input(setup, model, state, t0 + stepper.input_time_fraction() * setup.dt_s, input);
+        stepper.step(input, setup.dt_s, state);
         t = setup.t_initial_s + k * setup.dt_s;
         write_row(t, false);
         if (progress) progress(t, setup.t_final_s);

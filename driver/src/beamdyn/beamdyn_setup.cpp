@@ -97,10 +97,9 @@ BeamDynSetup beamdyn_setup(const io::BeamDynCase& bd) {
   return s;
 }
 
-beam::BeamInput beamdyn_input(const BeamDynSetup& s, const beam::BeamModel& model,
-                              const beam::BeamState& state, double t) {
+void beamdyn_input(const BeamDynSetup& s, const beam::BeamModel& model, const beam::BeamState& state,
+                   double t, beam::BeamInput& in) {
   const Mat3 rt = root_orientation(s, t).transpose();  // global → root frame
-  beam::BeamInput in;
   in.frame.angular_velocity_rad_s = rt * s.angular_velocity_rad_s;
   // The root turns about the global origin: a_root = ω × (ω × x_root(t)).
   const Vec3 x_root = rotation_matrix(s.angular_velocity_rad_s * (t - s.t_initial_s)) * s.root_position_m;
@@ -121,7 +120,6 @@ beam::BeamInput beamdyn_input(const BeamDynSetup& s, const beam::BeamModel& mode
     in.node_loads[n].head<3>() += f;
     in.node_loads[n].tail<3>() += rt * p.load.tail<3>() + arm.cross(f);
   }
-  return in;
 }
 
 }  // namespace fowtsim::driver

@@ -38,10 +38,11 @@ struct BeamDynSetup {
 // Throws InputError naming the BeamDyn file and key for what cannot be represented.
 BeamDynSetup beamdyn_setup(const io::BeamDynCase& bd);
 
-// Frame kinematics and dead loads at time t, resolved in the rotating root frame. Point loads
-// act at their reference-line point, transferred to the nearest node with the moment of the arm in
-// the current configuration.
-beam::BeamInput beamdyn_input(const BeamDynSetup& setup, const beam::BeamModel& model,
-                              const beam::BeamState& state, double t_s);
+// Frame kinematics and dead loads at time t, resolved in the rotating root frame, written into
+// `in` (sized on first use, then reused: no allocation in the time loop). Point loads act at
+// their reference-line point, transferred to the nearest node with the moment of the arm in the
+// current configuration.
+void beamdyn_input(const BeamDynSetup& setup, const beam::BeamModel& model, const beam::BeamState& state,
+                   double t_s, beam::BeamInput& in);
 
 }  // namespace fowtsim::driver

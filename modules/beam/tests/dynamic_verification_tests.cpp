@@ -46,3 +46,15 @@ TEST_CASE("time-step convergence with the ARKODE Dormand-Prince integrator",
   }
   CHECK(rows.back().relative < 0.01);  // seed Table 2.1 at 2e-5 s: 0.064 % (200 elements)
 }
+
+TEST_CASE("a step that breaks the small-angle assumption stops with a clear message", "[unit][beam]") {
+  // The closing moment on the strip turns the tip segment by radians within 1 ms: with the
+  // default 0.1 rad limit the step must be refused, naming the remedy.
+  const BeamModel model = discretise(benchmarks::steel_strip(), 50);
+  BeamState state = make_state(model);
+  BeamInput in;
+  in.tip_load[3] = benchmarks::steel_strip_rollup_moment();
+  DynamicStepper stepper(model, DynamicOptions{});
+  CHECK_THROWS_WITH(stepper.step(in, 1e-3, state),
+                    Catch::Contains("small-angle") && Catch::Contains("reduce the beam time step"));
+}
