@@ -75,7 +75,7 @@ Mat3 root_orientation(const BeamDynSetup& s, double t) {
 }  // namespace
 
 BeamDynSetup beamdyn_setup(const io::BeamDynCase& bd) {
-  BeamDynSetup s{{beamdyn_line(bd.primary), {}}};
+  BeamDynSetup s{.definition = {beamdyn_line(bd.primary), {}}};
   for (const io::BeamDynStation& st : bd.blade.stations) s.definition.stations.push_back({st.eta, st.stiffness, st.mass});
   if (bd.blade.damp_type == 2) unsupported(bd.blade.file, "damp_type", "modal damping (2) is not supported; use 0 or 1");
   if (bd.blade.damp_type == 1) s.definition.stiffness_damping = bd.blade.mu;

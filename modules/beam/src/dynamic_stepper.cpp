@@ -54,7 +54,6 @@ void DynamicStepper::step(const BeamInput& input, double dt, BeamState& state) {
     throw NumericalError({"beam", t_end, "increments", "reduce the beam time step"},
                          "non-finite beam increment");
   const double max_rot = update_base(q_, state);
-  state.last_increment_rad = max_rot;
   if (max_rot > options_.max_increment_rad)
     throw NumericalError(
         {"beam", t_end, "incremental rotation", "reduce the beam time step dt"},
@@ -121,7 +120,6 @@ void DynamicStepper::integrate_generalized_alpha(double dt, bool acceleration_re
 void DynamicStepper::integrate_erk(double dt) {
   erk_->integrate(system_, dt, v0_, q_, v1_);
   a1_.setZero();
-  erk_rhs_evaluations_ = erk_->rhs_evaluations();
 }
 
 }  // namespace fowtsim::beam

@@ -20,7 +20,6 @@ struct DynamicStepper::Erk {
   Erk& operator=(const Erk&) = delete;
 
   void integrate(const LinearizedBeam& system, double dt, const VecX& v0, VecX& q, VecX& v);
-  long rhs_evaluations() const { return rhs_evaluations_; }
 
   static int rhs(double t, void* y, void* ydot, void* self);  // N_Vector in, N_Vector out
 
@@ -31,7 +30,6 @@ struct DynamicStepper::Erk {
   const LinearizedBeam* system = nullptr;
   std::vector<Eigen::PartialPivLU<Mat6>> mass_lu;
   VecX force;
-  long rhs_evaluations_ = 0;
 };
 
 }  // namespace fowtsim::beam

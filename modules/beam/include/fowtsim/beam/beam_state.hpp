@@ -37,7 +37,6 @@ struct BeamState {
   std::vector<Vec6> velocity;     // [ẋ_n; ω_n] relative to f, in f [m/s; rad/s]
   std::vector<Vec6> acceleration;  // generalized-α's algorithmic acceleration, in f [m/s²; rad/s²]
   bool acceleration_valid = false;  // false: solved from M a = r − C v before the first step
-  double last_increment_rad = 0.0;  // largest |θ*_n| of the last step (small-angle check)
 };
 
 // Undeformed, at rest relative to f.

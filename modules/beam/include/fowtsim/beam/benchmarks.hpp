@@ -2,7 +2,10 @@
 // The benchmark beams of seed 000 §2.5 (and seed 002 §5.2), built in BeamDyn's convention (local
 // axis 3 along the beam), with their exact solutions where one exists. Shared by the tests and by
 // `fowtsim verify beam-…`.
+#include <vector>
+
 #include "fowtsim/beam/beam_model.hpp"
+#include "fowtsim/beam/solvers.hpp"
 
 namespace fowtsim::beam::benchmarks {
 
@@ -26,13 +29,6 @@ BeamDefinition curved_beam();
 BeamDefinition steel_strip();
 double steel_strip_rollup_moment();  // 2π EI / L (= 4π for EI ≈ 2): closes the circle [N·m]
 
-}  // namespace fowtsim::beam::benchmarks
-
-#include <vector>
-
-#include "fowtsim/beam/solvers.hpp"
-
-namespace fowtsim::beam::benchmarks {
 
 // One row of the seed's Table 2.1: node positions at t_end with step dt compared with a reference
 // run at a much smaller step.

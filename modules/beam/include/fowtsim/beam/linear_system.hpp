@@ -24,8 +24,6 @@
 
 namespace fowtsim::beam {
 
-struct SectionResult;
-
 struct LinearizedBeam {
   std::vector<Mat6> mass;       // M, block diagonal
   BlockTridiagonal damping;     // C

@@ -72,9 +72,6 @@ class DynamicStepper {
   // over the step, best taken at the middle.
   double input_time_fraction() const;
 
-  const LinearizedBeam& system() const { return system_; }
-  long erk_rhs_evaluations() const { return erk_rhs_evaluations_; }
-
   struct Erk;  // ARKODE state of the erk integrator (src/erk_integrator.hpp)
 
  private:
@@ -87,7 +84,6 @@ class DynamicStepper {
   BlockTridiagonal lhs_;
   VecX v0_, a0_, q_, v1_, a1_, work_, product_;
   std::unique_ptr<Erk> erk_;
-  long erk_rhs_evaluations_ = 0;
 };
 
 // Fold increments q (u*, θ* per node, in f) into the base: x ← x + u*, R ← exp(θ̃*) R
