@@ -27,12 +27,12 @@ struct BeamDynSetup {
   Vec3 gravity_m_s2 = Vec3::Zero();           // global [m/s²]
   Vec6 distributed_load = Vec6::Zero();       // global, per unit length [N/m, N·m/m]
   Vec6 tip_load = Vec6::Zero();               // global [N, N·m]
-  std::vector<io::BeamDynPointLoad> point_loads;  // global
+  std::vector<io::BeamDynPointLoad> point_loads{};  // global
   bool dynamic = false;
   bool quasi_static_init = false;
   double t_initial_s = 0.0, t_final_s = 0.0, dt_s = 0.0;
   double spectral_radius = 0.0;               // rhoinf
-  std::vector<std::string> out_list;
+  std::vector<std::string> out_list{};
 };
 
 // Throws InputError naming the BeamDyn file and key for what cannot be represented.
