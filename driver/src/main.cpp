@@ -15,6 +15,7 @@
 #include "fowtsim/core/version.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "run/run_scene.hpp"
+#include "scenes/beam_scene.hpp"
 #include "scenes/scene_schema.hpp"
 
 using namespace fowtsim;
@@ -113,7 +114,8 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : kExitInput;
   }
   if (help_deck) {
-    fmt::print("{}", io::describe_schema(scene_schema()));
+    fmt::print("Toy coupled-oscillator scene:\n{}\nBeam scene (a deck with a top-level `beam`):\n{}",
+               io::describe_schema(scene_schema()), io::describe_schema(beam_scene_schema()));
     return 0;
   }
   if (app.get_subcommands().empty()) {

@@ -52,22 +52,34 @@ bool is_beamdyn_driver_file(const std::filesystem::path& path) {
 
 RunReport run_beamdyn_case(const RunRequest& request, const ProgressCallback& progress) {
   BeamDynSetup setup = beamdyn_setup(io::read_beamdyn_driver(request.deck_path));
+  SingleBeamRun how;
+  how.segments = request.beam_segments.value_or(48);
+  how.integrator = request.beam_integrator.value_or("generalized_alpha");
+  how.channels = setup.out_list;
+  how.scene = "beamdyn_driver";
+  return run_single_beam(setup, how, request, progress);
+}
+
+RunReport run_single_beam(const BeamDynSetup& setup_in, const SingleBeamRun& how, const RunRequest& request,
+                          const ProgressCallback& progress) {
+  BeamDynSetup setup = setup_in;
   if (request.t_max_s) setup.t_final_s = setup.t_initial_s + *request.t_max_s;
-  const int segments = request.beam_segments.value_or(48);
-  const beam::BeamModel model = beam::discretise(setup.definition, segments);
+  const beam::BeamModel model = beam::discretise(setup.definition, how.segments);
 
   RunReport report;
   report.coupling = "beam only";
   const auto all = beamdyn_channels();
   std::vector<std::size_t> picked;
-  for (const std::string& name : setup.out_list) {
+  for (const std::string& name : how.channels) {
     if (const auto i = find_beamdyn_channel(name)) {
       picked.push_back(*i);
-    } else {
+    } else if (how.skip_unknown_channels) {
       report.warnings.push_back(fmt::format("BeamDyn channel '{}' is not available and is not written", name));
+    } else {
+      throw InputError({"beam", std::nullopt, name, ""}, fmt::format("unknown beam channel '{}'", name));
     }
   }
-  if (setup.out_list.empty())
+  if (how.channels.empty())
     for (std::size_t i = 0; i < all.size(); ++i) picked.push_back(i);
   std::vector<ChannelInfo> written;
   for (std::size_t i : picked) written.push_back(all[i]);
@@ -78,13 +90,14 @@ RunReport run_beamdyn_case(const RunRequest& request, const ProgressCallback& pr
   io::RunMetadata metadata;
   metadata.version = kVersion;
   metadata.deck_path = request.deck_path.string();
+  metadata.deck_hash = how.deck_hash;
   metadata.dt_s = setup.dt_s;
   metadata.dt_coupling_s = setup.dt_s;
   beam::DynamicOptions options;
-  options.integrator = beam::integrator_from_name(request.beam_integrator.value_or("generalized_alpha"));
+  options.integrator = beam::integrator_from_name(how.integrator);
   options.spectral_radius = setup.spectral_radius;
-  metadata.extra = {{"scene", "beamdyn_driver"},
-                    {"beam_segments", std::to_string(segments)},
+  metadata.extra = {{"scene", how.scene},
+                    {"beam_segments", std::to_string(how.segments)},
                     {"beam_integrator", beam::integrator_name(options.integrator)}};
   outputs.begin(written, metadata);
 
@@ -124,7 +137,7 @@ RunReport run_beamdyn_case(const RunRequest& request, const ProgressCallback& pr
         beamdyn_input(setup, model, state, t0 + stepper.input_time_fraction() * setup.dt_s, input);
         stepper.step(input, setup.dt_s, state);
         t = setup.t_initial_s + k * setup.dt_s;
-        write_row(t, false);
+        if (k % how.decimation == 0) write_row(t, false);
         if (progress) progress(t, setup.t_final_s);
       }
       report.large_steps = steps;

@@ -1,6 +1,9 @@
 #pragma once
 // `fowtsim run bd_driver.inp`: run a BeamDyn stand-alone driver case with the MBBT beam and write
 // BeamDyn's channels (rows at the same times BeamDyn writes them, so `fowtsim compare` lines up).
+#include <string>
+#include <vector>
+
 #include "run/run_types.hpp"
 
 namespace fowtsim::driver {
@@ -9,5 +12,20 @@ namespace fowtsim::driver {
 bool is_beamdyn_driver_file(const std::filesystem::path& path);
 
 RunReport run_beamdyn_case(const RunRequest& request, const ProgressCallback& progress);
+
+struct BeamDynSetup;
+
+// How to run one clamped beam (a BeamDyn case or a YAML beam scene).
+struct SingleBeamRun {
+  int segments = 48;
+  std::string integrator = "generalized_alpha";
+  std::vector<std::string> channels;  // BeamDyn channel names to write; empty = all
+  bool skip_unknown_channels = true;  // BeamDyn OutList: warn and skip; YAML decks check before
+  long decimation = 1;                // write every k-th step
+  std::string scene;                  // recorded in the output metadata
+  std::string deck_hash;
+};
+RunReport run_single_beam(const BeamDynSetup& setup, const SingleBeamRun& how, const RunRequest& request,
+                          const ProgressCallback& progress);
 
 }  // namespace fowtsim::driver

@@ -49,22 +49,17 @@ class EndpointPolynomial {
 beam::ReferenceLine beamdyn_line(const io::BeamDynPrimary& p) {
   if (p.member_total != 1)
     unsupported(p.file, "member_total", fmt::format("only one member is supported, got {}", p.member_total));
-  const auto& kp = p.key_points;
-  const double z0 = kp.front().position_m.z(), z1 = kp.back().position_m.z();
-  if (!(z1 > z0)) unsupported(p.file, "kp_zr", "key points must advance along +z");
-  std::vector<double> xi, x, y, twist;
-  for (const io::BeamDynKeyPoint& k : kp) {
-    xi.push_back(2.0 * (k.position_m.z() - z0) / (z1 - z0) - 1.0);
-    x.push_back(k.position_m.x());
-    y.push_back(k.position_m.y());
-    twist.push_back(-k.initial_twist_deg * kPi / 180.0);  // BeamDyn turns the section by −twist
+  std::vector<Vec3> points;
+  std::vector<double> twist;
+  for (const io::BeamDynKeyPoint& k : p.key_points) {
+    points.push_back(k.position_m);
+    twist.push_back(k.initial_twist_deg);
   }
-  const int degree = std::min(p.order_elem, static_cast<int>(kp.size()) - 1);
-  const EndpointPolynomial px(xi, x, degree), py(xi, y, degree), pt(xi, twist, degree);
-  auto xi_of = [=](double z) { return 2.0 * (z - z0) / (z1 - z0) - 1.0; };
-  return beam::ReferenceLine::parametric(
-      [=](double z) { return Vec3(px(xi_of(z)), py(xi_of(z)), z); },
-      [=](double z) { return pt(xi_of(z)); }, z0, z1);
+  try {
+    return beamdyn_reference_line(points, twist, std::min(p.order_elem, static_cast<int>(points.size()) - 1));
+  } catch (const InputError& e) {
+    unsupported(p.file, "kp_zr", e.message());
+  }
 }
 
 // Root-frame orientation at time t: R(t) = exp(ω̃ (t − t0)) R0.
@@ -73,6 +68,26 @@ Mat3 root_orientation(const BeamDynSetup& s, double t) {
 }
 
 }  // namespace
+
+beam::ReferenceLine beamdyn_reference_line(const std::vector<Vec3>& kp, const std::vector<double>& twist_deg,
+                                           int degree) {
+  const double z0 = kp.front().z(), z1 = kp.back().z();
+  if (kp.size() < 2 || kp.size() != twist_deg.size() || !(z1 > z0))
+    throw InputError({"beam", std::nullopt, "kp_zr", ""},
+                     "key points: need ≥ 2 with z increasing root to tip and one twist each");
+  std::vector<double> xi, x, y, twist;
+  for (std::size_t i = 0; i < kp.size(); ++i) {
+    xi.push_back(2.0 * (kp[i].z() - z0) / (z1 - z0) - 1.0);
+    x.push_back(kp[i].x());
+    y.push_back(kp[i].y());
+    twist.push_back(-twist_deg[i] * kPi / 180.0);  // BeamDyn turns the section by −twist
+  }
+  const EndpointPolynomial px(xi, x, degree), py(xi, y, degree), pt(xi, twist, degree);
+  auto xi_of = [=](double z) { return 2.0 * (z - z0) / (z1 - z0) - 1.0; };
+  return beam::ReferenceLine::parametric(
+      [=](double z) { return Vec3(px(xi_of(z)), py(xi_of(z)), z); },
+      [=](double z) { return pt(xi_of(z)); }, z0, z1);
+}
 
 BeamDynSetup beamdyn_setup(const io::BeamDynCase& bd) {
   BeamDynSetup s{.definition = {beamdyn_line(bd.primary), {}}};

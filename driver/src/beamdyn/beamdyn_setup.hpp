@@ -38,6 +38,12 @@ struct BeamDynSetup {
 // Throws InputError naming the BeamDyn file and key for what cannot be represented.
 BeamDynSetup beamdyn_setup(const io::BeamDynCase& bd);
 
+// BeamDyn's reference line through key points (z increasing): per coordinate and for the twist a
+// least-squares polynomial in z of total degree `degree`, end points met exactly; section frame
+// turned by −twist about the tangent. Throws InputError (variable "kp_zr") if z does not increase.
+beam::ReferenceLine beamdyn_reference_line(const std::vector<Vec3>& key_points_m,
+                                           const std::vector<double>& twist_deg, int degree);
+
 // Frame kinematics and dead loads at time t, resolved in the rotating root frame, written into
 // `in` (sized on first use, then reused: no allocation in the time loop). Point loads act at
 // their reference-line point, transferred to the nearest node with the moment of the arm in the

@@ -1,6 +1,7 @@
 #include "run/run_scene.hpp"
 
 #include "beamdyn/beamdyn_run.hpp"
+#include "scenes/beam_scene.hpp"
 
 #include "fowtsim/io/schema.hpp"
 #include "scenes/scene_schema.hpp"
@@ -10,6 +11,7 @@ namespace fowtsim::driver {
 
 RunReport run_scene(const RunRequest& request, const ProgressCallback& progress) {
   if (is_beamdyn_driver_file(request.deck_path)) return run_beamdyn_case(request, progress);
+  if (is_beam_scene(request.deck_path)) return run_beam_scene(request, progress);
   const io::ValidatedDeck deck = io::read_deck(scene_schema(), request.deck_path);
   // The toy oscillators are the only scene until the turbine modules land.
   return run_toy_scene(deck, request, progress);

@@ -1,0 +1,17 @@
+#pragma once
+// The YAML beam scene: one clamped beam (our own deck format for everything BeamDyn files do not
+// cover), static or dynamic, with a rotating root, gravity and dead loads. Its keys are listed by
+// `fowtsim --help-deck` and in inputs/beams/.
+#include "fowtsim/io/schema.hpp"
+#include "run/run_types.hpp"
+
+namespace fowtsim::driver {
+
+io::Schema beam_scene_schema();
+
+// True if the YAML deck's top level holds a `beam` mapping.
+bool is_beam_scene(const std::filesystem::path& deck);
+
+RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& progress);
+
+}  // namespace fowtsim::driver

@@ -1,0 +1,64 @@
+// The YAML beam scene (our own beam deck format): the shipped roll-up deck closes its circle, and
+// bad beam decks stop before the run with file, line and key.
+#include <cmath>
+#include <fstream>
+
+#include <catch2/catch.hpp>
+
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/io/readers.hpp"
+#include "fowtsim/testing/skip.hpp"
+#include "run/run_scene.hpp"
+
+using namespace fowtsim;
+using namespace fowtsim::driver;
+
+namespace {
+RunRequest request_for(const std::filesystem::path& deck, const std::filesystem::path& base) {
+  RunRequest r;
+  r.deck_path = deck;
+  r.output_base = base;
+  r.output_format = std::string("out");
+  return r;
+}
+}  // namespace
+
+TEST_CASE("the roll-up beam deck closes its circle", "[verification][beam_scene]") {
+  const auto dir = testing::scratch_dir("beam_scene_rollup");
+  run_scene(request_for(testing::source_dir() / "inputs/beams/rollup.yaml", dir / "rollup"), nullptr);
+  const io::ChannelTable t = io::read_channels(dir / "rollup.out");
+  // Exact: the tip returns to the root (TipTDz = −L, TipTDy = 0), turned by 2π (TipRD = 0); the
+  // root moment equals the applied 4π. 100 second-order volumes: measured 1.2e-6 m.
+  CHECK(std::abs(t.columns[*t.find("TipTDzr")].back() + 1.0) < 1e-5);
+  CHECK(std::abs(t.columns[*t.find("TipTDyr")].back()) < 1e-5);
+  CHECK(std::abs(t.columns[*t.find("TipRDxr")].back()) < 1e-5);
+  // Exact balance, read back from a .out that keeps 10 significant digits.
+  CHECK(std::abs(t.columns[*t.find("RootMxr")].back() - 4.0 * 3.14159265358979323846) < 1e-8);
+}
+
+TEST_CASE("bad beam decks stop before the run with file, line and key", "[unit][beam_scene]") {
+  const auto dir = testing::scratch_dir("beam_scene_bad");
+  const auto deck = dir / "beam.yaml";
+  SECTION("a stiffness matrix with 35 entries") {
+    std::ofstream(deck) << "simulation: {analysis: static}\nbeam:\n  key_points_m: [[0,0,0],[0,0,1]]\n  twist_deg: [0, 0]\n  stations:\n"
+                           "    - {eta: 0, stiffness: [1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1], mass: [1,0,0,0,0,0, 0,1,0,0,0,0, 0,0,1,0,0,0, 0,0,0,1,0,0, 0,0,0,0,1,0, 0,0,0,0,0,1]}\n";
+    CHECK_THROWS_WITH(run_scene(request_for(deck, dir / "run"), nullptr),
+                      Catch::Contains("beam.yaml:6") && Catch::Contains("beam.stations[0].stiffness"));
+    CHECK_FALSE(std::filesystem::exists(dir / "run.out"));
+  }
+  SECTION("one twist too few") {
+    std::ofstream(deck) << "simulation: {analysis: static}\nbeam:\n  key_points_m: [[0,0,0],[0,0,0.5],[0,0,1]]\n  twist_deg: [0, 0]\n  stations:\n"
+                           "    - {eta: 0, stiffness: [1,0,0,0,0,0, 0,1,0,0,0,0, 0,0,1,0,0,0, 0,0,0,1,0,0, 0,0,0,0,1,0, 0,0,0,0,0,1],"
+                           " mass: [1,0,0,0,0,0, 0,1,0,0,0,0, 0,0,1,0,0,0, 0,0,0,1,0,0, 0,0,0,0,1,0, 0,0,0,0,0,1]}\n";
+    CHECK_THROWS_WITH(run_scene(request_for(deck, dir / "run"), nullptr),
+                      Catch::Contains("beam.yaml:4") && Catch::Contains("beam.twist_deg"));
+  }
+  SECTION("an unknown output channel") {
+    std::ofstream(deck) << "simulation: {analysis: static}\noutput: {channels: [TipTDxr, OoPDefl1]}\n"
+                           "beam:\n  key_points_m: [[0,0,0],[0,0,1]]\n  twist_deg: [0, 0]\n  stations:\n"
+                           "    - {eta: 0, stiffness: [1,0,0,0,0,0, 0,1,0,0,0,0, 0,0,1,0,0,0, 0,0,0,1,0,0, 0,0,0,0,1,0, 0,0,0,0,0,1],"
+                           " mass: [1,0,0,0,0,0, 0,1,0,0,0,0, 0,0,1,0,0,0, 0,0,0,1,0,0, 0,0,0,0,1,0, 0,0,0,0,0,1]}\n";
+    CHECK_THROWS_WITH(run_scene(request_for(deck, dir / "run"), nullptr),
+                      Catch::Contains("beam.yaml:2") && Catch::Contains("OoPDefl1"));
+  }
+}
