@@ -13,8 +13,11 @@
 
 namespace fowtsim::driver {
 
-// The channels we can write, in BeamDyn's naming: RootF/M{x,y,z}r, TipTD/TipRD{x,y,z}r,
-// N1F/M{x,y,z}l.
+// The channels we can write:
+//  * BeamDyn's (N, N-m, m, WM parameters): RootF/M{x,y,z}r, TipTD/TipRD{x,y,z}r, N1F/M{x,y,z}l;
+//  * the same as OpenFAST names BeamDyn's channels of blade 1 in a coupled run: B1RootFxr, …;
+//  * ElastoDyn's blade-frame names (frame b: the pitched blade root frame, which is r here):
+//    RootF/M{x,y,z}b1 in kN, kN-m; TipD{x,y,z}b1 in m; TipRD{x,y}b1 in deg (rotation vector).
 std::vector<ChannelInfo> beamdyn_channels();
 
 // Index into beamdyn_channels() of a BeamDyn channel name (case-insensitive), if we support it.
