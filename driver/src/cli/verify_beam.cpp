@@ -9,15 +9,11 @@
 #include "beamdyn/beamdyn_comparison.hpp"
 #include "beamdyn/beamdyn_setup.hpp"
 #include "cli/verify_cases.hpp"
-#include "fowtsim/beam/beam_outputs.hpp"
 #include "fowtsim/beam/benchmarks.hpp"
 #include "fowtsim/beam/modal.hpp"
-#include "fowtsim/beam/solvers.hpp"
 
 namespace fowtsim::driver {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::filesystem::path& shared_root() {
   static std::filesystem::path root = "../shared";
@@ -51,20 +47,9 @@ std::vector<VerificationRow> verify_beam_rollup(std::FILE* out) {
   std::vector<VerificationRow> rows;
   fmt::print(out, "Tip-moment roll-up (seed §2.5.1): L = 1, EI = 2, M = 4π → closed circle\n");
   fmt::print(out, "{:>9} {:>13}\n", "elements", "RMSE [m]");
-  const double moment = 2.0 * kPi * beam::benchmarks::kRollupBendingStiffness / beam::benchmarks::kRollupLength;
   std::vector<double> logh, loge;
   for (int n : {5, 10, 20, 50, 100, 200}) {
-    const beam::BeamModel model = beam::discretise(beam::benchmarks::rollup_beam(), n);
-    beam::BeamState state = beam::make_state(model);
-    beam::BeamInput in;
-    in.tip_load[3] = moment;
-    beam::StaticOptions opt;
-    opt.load_steps = 8;
-    beam::solve_static(model, in, state, opt);
-    double sum = 0.0;
-    for (int i = 0; i < n; ++i)
-      sum += (state.position_m[i] - beam::benchmarks::rollup_exact_position(model.nodes[i].s_m, moment, beam::benchmarks::kRollupBendingStiffness)).squaredNorm();
-    const double rmse = std::sqrt(sum / n);
+    const double rmse = beam::benchmarks::rollup_rmse(n);
     fmt::print(out, "{:>9} {:>13.4e}\n", n, rmse);
     logh.push_back(std::log(1.0 / n));
     loge.push_back(std::log(rmse));
@@ -94,17 +79,9 @@ std::vector<VerificationRow> verify_beam_curved(std::FILE* out) {
   const Vec3 seed300(58.78, 40.20, 22.25), seed600(47.15, 53.47, 15.69);
   double worst = 0.0;
   for (int n : {16, 32, 64, 128}) {
-    const beam::BeamModel model = beam::discretise(beam::benchmarks::curved_beam(), n);
     std::string line = fmt::format("{:>9}", n);
     for (double f : {300.0, 600.0}) {
-      beam::BeamState state = beam::make_state(model);
-      beam::BeamInput in;
-      in.tip_load[1] = f;
-      beam::StaticOptions opt;
-      opt.load_steps = 4;
-      beam::solve_static(model, in, state, opt);
-      const Vec3 tip = beam::beam_outputs(model, state).tip_position_m;
-      const Vec3 seed_axes(tip.z(), tip.y(), tip.x());
+      const Vec3 seed_axes = beam::benchmarks::curved_beam_tip_seed_axes(n, f);
       line += fmt::format(" ({:8.3f},{:8.3f},{:8.3f})", seed_axes.x(), seed_axes.y(), seed_axes.z());
       if (n == 128) worst = std::max(worst, (seed_axes - (f == 300.0 ? seed300 : seed600)).cwiseAbs().maxCoeff());
     }

@@ -27,12 +27,17 @@ void BlockTridiagonal::multiply(const VecX& x, VecX& y) const {
   }
 }
 
-void BlockTridiagonal::add_scaled(const BlockTridiagonal& other, double s) {
-  for (int i = 0; i < blocks(); ++i) diag_[i] += s * other.diag_[i];
-  for (std::size_t i = 0; i < upper_.size(); ++i) {
-    upper_[i] += s * other.upper_[i];
-    lower_[i] += s * other.lower_[i];
+MatX BlockTridiagonal::dense() const {
+  const int n = blocks();
+  MatX a = MatX::Zero(6 * n, 6 * n);
+  for (int i = 0; i < n; ++i) {
+    a.block<6, 6>(6 * i, 6 * i) = diag_[i];
+    if (i + 1 < n) {
+      a.block<6, 6>(6 * i, 6 * i + 6) = upper_[i];
+      a.block<6, 6>(6 * i + 6, 6 * i) = lower_[i];
+    }
   }
+  return a;
 }
 
 bool BlockTridiagonal::factor() {

@@ -15,14 +15,7 @@ std::vector<double> natural_frequencies_hz(const BeamModel& model, const BeamInp
   LinearizedBeam sys;
   linearize(model, input, state, Inertia::included, sys);
   const int dofs = model.dof_count();
-  MatX k = MatX::Zero(dofs, dofs);
-  VecX unit = VecX::Zero(dofs), column(dofs);
-  for (int c = 0; c < dofs; ++c) {
-    unit.setZero();
-    unit[c] = 1.0;
-    sys.stiffness.multiply(unit, column);
-    k.col(c) = column;
-  }
+  const MatX k = sys.stiffness.dense();
   MatX minv_k(dofs, dofs);
   for (int n = 0; n < model.node_count(); ++n)
     minv_k.middleRows(6 * n, 6) = sys.mass[n].partialPivLu().solve(k.middleRows(6 * n, 6));

@@ -1,5 +1,7 @@
 #include "fowtsim/beam/rotating_benchmarks.hpp"
 
+#include "fowtsim/beam/benchmarks.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -19,17 +21,6 @@ Mat3 beam_along_x() {
   frame.col(1) = Vec3::UnitZ();
   frame.col(2) = Vec3::UnitX();
   return frame;
-}
-
-Station uniform_station(double eta, const Vec6& stiffness, double mass_per_length,
-                        const Vec3& rotary_inertia) {
-  Station s;
-  s.eta = eta;
-  s.stiffness = stiffness.asDiagonal();
-  s.mass = Mat6::Zero();
-  s.mass.topLeftCorner<3, 3>() = mass_per_length * Mat3::Identity();
-  s.mass.bottomRightCorner<3, 3>() = rotary_inertia.asDiagonal();
-  return s;
 }
 
 BeamDefinition uniform_beam_along_x(double length_m, const Vec6& stiffness, double mass_per_length,

@@ -11,37 +11,13 @@
 using namespace fowtsim;
 using namespace fowtsim::beam;
 
-namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// RMS over nodes of |x_n − exact circle(s_n)| under the seed's tip moment 4π = 2π EI/L, which
-// bends the beam into one closed circle.
-double rollup_rmse(int segments) {
-  const BeamModel model = discretise(benchmarks::rollup_beam(), segments);
-  BeamState state = make_state(model);
-  BeamInput in;
-  const double moment = 2.0 * kPi * benchmarks::kRollupBendingStiffness / benchmarks::kRollupLength;
-  in.tip_load[3] = moment;
-  StaticOptions opt;
-  opt.load_steps = 8;
-  solve_static(model, in, state, opt);
-  double sum = 0.0;
-  for (int n = 0; n < segments; ++n) {
-    const Vec3 exact = benchmarks::rollup_exact_position(model.nodes[n].s_m, moment,
-                                                         benchmarks::kRollupBendingStiffness);
-    sum += (state.position_m[n] - exact).squaredNorm();
-  }
-  return std::sqrt(sum / segments);
-}
-
-}  // namespace
 
 TEST_CASE("tip-moment roll-up closes the circle with second-order spatial convergence",
           "[verification][beam]") {
   const std::vector<int> segments{5, 10, 20, 50, 100, 200};
   std::vector<double> rmse;
-  for (int n : segments) rmse.push_back(rollup_rmse(n));
+  for (int n : segments) rmse.push_back(benchmarks::rollup_rmse(n));
   // Least-squares slope of log RMSE against log element size.
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (std::size_t i = 0; i < segments.size(); ++i) {
@@ -60,18 +36,10 @@ TEST_CASE("45-degree curved cantilever matches the seed's converged tip coordina
           "[verification][beam]") {
   // Seed Table 2.2 (MBBT, converged): F = 300 → (58.78, 40.20, 22.25), F = 600 → (47.15, 53.47,
   // 15.69) in the seed's axes, where the arc starts along x and bends towards z. Our arc starts
-  // along z and bends towards x (BeamDyn's), so seed (x, y, z) = ours (z, y, x).
-  const BeamModel model = discretise(benchmarks::curved_beam(), 128);
+  // along z and bends towards x (BeamDyn's): compared in the seed's axes.
   for (const auto& [force, expected] : {std::pair{300.0, Vec3(58.78, 40.20, 22.25)},
                                        std::pair{600.0, Vec3(47.15, 53.47, 15.69)}}) {
-    BeamState state = make_state(model);
-    BeamInput in;
-    in.tip_load[1] = force;
-    StaticOptions opt;
-    opt.load_steps = 4;
-    solve_static(model, in, state, opt);
-    const Vec3 tip = beam_outputs(model, state).tip_position_m;
-    const Vec3 seed_axes(tip.z(), tip.y(), tip.x());
+    const Vec3 seed_axes = benchmarks::curved_beam_tip_seed_axes(128, force);
     INFO("F = " << force << ": tip (seed axes) " << seed_axes.transpose());
     // Issue 3: within 0.1 of the seed's converged values (the table prints 2 decimals).
     CHECK((seed_axes - expected).cwiseAbs().maxCoeff() < 0.1);

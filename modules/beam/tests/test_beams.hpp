@@ -6,18 +6,6 @@
 
 namespace fowtsim::beam::testing {
 
-// Isotropic-style diagonal section: [GA1 GA2 EA EI1 EI2 GJ] and uniform mass m with rotary
-// inertia i per length.
-inline Station diagonal_station(double eta, const Vec6& k, double m, const Vec3& i) {
-  Station s;
-  s.eta = eta;
-  s.stiffness = k.asDiagonal();
-  s.mass = Mat6::Zero();
-  s.mass.topLeftCorner<3, 3>() = m * Mat3::Identity();
-  s.mass.bottomRightCorner<3, 3>() = i.asDiagonal();
-  return s;
-}
-
 // A deliberately general beam: curved, twisted, fully populated symmetric positive-definite
 // stiffness, mass centre off the reference line. For tangent and invariance checks.
 inline BeamDefinition general_beam() {

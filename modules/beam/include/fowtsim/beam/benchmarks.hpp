@@ -9,6 +9,10 @@
 
 namespace fowtsim::beam::benchmarks {
 
+// A station with diagonal stiffness [κGA1, κGA2, EA, EI1, EI2, GJ], mass per length m on the
+// reference line and diagonal rotary inertia per length (no offsets).
+Station uniform_station(double eta, const Vec6& stiffness, double mass_per_length, const Vec3& rotary_inertia);
+
 // §2.5.1: straight cantilever along z, length 1, bending stiffness 2 about x (and y), shear and
 // axial stiffness 1e4 (stiff: the exact circle is inextensible), torsion 2. Unit mass per length.
 BeamDefinition rollup_beam();
@@ -20,9 +24,17 @@ inline constexpr double kRollupBendingStiffness = 2.0;
 // z towards −y).
 Vec3 rollup_exact_position(double s, double moment_x, double bending_stiffness);
 
+// RMS over nodes of |x_n − exact circle(s_n)| of the roll-up beam with `segments` volumes under
+// the seed's tip moment 4π = 2π EI/L (static solve): the measure of the seed's Fig. 2.5.
+double rollup_rmse(int segments);
+
 // §2.5.2 (Bathe–Bolourchi): 45° arc of radius 100 starting along z, bending towards +x (as the
 // BeamDyn r-test bd_curved_beam), unit square section E = 1e7, G = 0.5e7, shear factor 5/6.
 BeamDefinition curved_beam();
+
+// Static tip position of curved_beam() under tip force F along +y, in the seed's axes (its arc
+// starts along x and bends towards z: seed (x, y, z) = ours (z, y, x)).
+Vec3 curved_beam_tip_seed_axes(int segments, double force_N);
 
 // §2.5.1 time-step study: the 1 m steel strip 3.31 × 3.31 mm, E 200 GPa, G 79.3 GPa,
 // ρ 7850 kg/m³, stiffness damping 1e-6 s, rolled up by its tip moment.

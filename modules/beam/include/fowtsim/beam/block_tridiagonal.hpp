@@ -29,8 +29,8 @@ class BlockTridiagonal {
 
   // y = A x (x, y of length 6·blocks; y must not alias x).
   void multiply(const VecX& x, VecX& y) const;
-  // this += s · other
-  void add_scaled(const BlockTridiagonal& other, double s);
+  // The full matrix (for analysis and tests; allocates).
+  MatX dense() const;
 
   // Factor in place (destroys the matrix) and solve A x = b; b is overwritten with x.
   // Returns false if a pivot block is singular.
