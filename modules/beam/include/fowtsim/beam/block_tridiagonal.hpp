@@ -1,12 +1,11 @@
 #pragma once
 // Block-tridiagonal matrices with 6×6 blocks: the structure of every assembled beam matrix (a
 // section couples only its two neighbouring nodes). Storage and solve are O(N); the solve is block
-// LU without pivoting across blocks (partial pivoting inside each 6×6 pivot block), which is
-// stable for the block diagonally dominant systems a step produces (mass + Δt² stiffness).
+// LU without pivoting across blocks (each 6×6 pivot block inverted by Gauss–Jordan with partial
+// pivoting), which is stable for the block diagonally dominant systems a step produces
+// (mass + Δt² stiffness).
 // All storage is sized once; factor/solve do not allocate.
 #include <vector>
-
-#include <Eigen/LU>
 
 #include "fowtsim/core/types.hpp"
 
@@ -39,7 +38,7 @@ class BlockTridiagonal {
 
  private:
   std::vector<Mat6> diag_, upper_, lower_;
-  std::vector<Eigen::PartialPivLU<Mat6>> pivots_;
+  std::vector<Mat6> pivot_inverses_;  // D'_i⁻¹ after factor()
 };
 
 }  // namespace fowtsim::beam
