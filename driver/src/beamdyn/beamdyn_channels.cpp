@@ -7,33 +7,34 @@
 namespace fowtsim::driver {
 
 std::vector<ChannelInfo> beamdyn_channels() {
+  struct Group {
+    const char* prefix;
+    const char* suffix;
+    int axes;
+    const char* unit;
+    const char* description;
+  };
+  // Order matters: beamdyn_channel_values() fills the same order.
+  static constexpr Group kGroups[] = {
+      {"RootF", "r", 3, "N", "force of the beam on its root, root frame"},
+      {"RootM", "r", 3, "N-m", "moment of the beam on its root, about the root, root frame"},
+      {"TipTD", "r", 3, "m", "tip translational deflection, root frame"},
+      {"TipRD", "r", 3, "-", "tip rotation (Wiener-Milenkovic), root frame"},
+      {"N1F", "l", 3, "N", "root section force, local section frame"},
+      {"N1M", "l", 3, "N-m", "root section moment, local section frame"},
+      {"B1RootF", "r", 3, "N", "blade 1 root force, root frame (OpenFAST's name for BeamDyn's RootF)"},
+      {"B1RootM", "r", 3, "N-m", "blade 1 root moment, root frame (OpenFAST's name for BeamDyn's RootM)"},
+      {"B1TipTD", "r", 3, "m", "blade 1 tip deflection, root frame (OpenFAST's name for BeamDyn's TipTD)"},
+      {"B1TipRD", "r", 3, "-", "blade 1 tip rotation, root frame (OpenFAST's name for BeamDyn's TipRD)"},
+      {"RootF", "b1", 3, "kN", "blade 1 root force, blade frame (ElastoDyn name)"},
+      {"RootM", "b1", 3, "kN-m", "blade 1 root moment, blade frame (ElastoDyn name)"},
+      {"TipD", "b1", 3, "m", "blade 1 tip deflection, blade frame (ElastoDyn name)"},
+      {"TipRD", "b1", 2, "deg", "blade 1 tip rotation, blade frame (ElastoDyn name)"},
+  };
   std::vector<ChannelInfo> c;
-  const char* axes = "xyz";
-  for (int k = 0; k < 3; ++k)
-    c.push_back({std::string("RootF") + axes[k] + "r", "N", "force of the beam on its root, root frame", "beam"});
-  for (int k = 0; k < 3; ++k)
-    c.push_back({std::string("RootM") + axes[k] + "r", "N-m", "moment of the beam on its root, about the root, root frame", "beam"});
-  for (int k = 0; k < 3; ++k)
-    c.push_back({std::string("TipTD") + axes[k] + "r", "m", "tip translational deflection, root frame", "beam"});
-  for (int k = 0; k < 3; ++k)
-    c.push_back({std::string("TipRD") + axes[k] + "r", "-", "tip rotation (Wiener-Milenkovic), root frame", "beam"});
-  for (int k = 0; k < 3; ++k)
-    c.push_back({std::string("N1F") + axes[k] + "l", "N", "root section force, local section frame", "beam"});
-  for (int k = 0; k < 3; ++k)
-    c.push_back({std::string("N1M") + axes[k] + "l", "N-m", "root section moment, local section frame", "beam"});
-  for (std::size_t i = 0; i < 12; ++i) {  // OpenFAST's names for BeamDyn blade 1 in a coupled run
-    ChannelInfo b1 = c[i];
-    b1.name = "B1" + b1.name;
-    c.push_back(b1);
-  }
-  for (int k = 0; k < 3; ++k)
-    c.push_back({std::string("RootF") + axes[k] + "b1", "kN", "blade 1 root force, blade frame (ElastoDyn name)", "beam"});
-  for (int k = 0; k < 3; ++k)
-    c.push_back({std::string("RootM") + axes[k] + "b1", "kN-m", "blade 1 root moment, blade frame (ElastoDyn name)", "beam"});
-  for (int k = 0; k < 3; ++k)
-    c.push_back({std::string("TipD") + axes[k] + "b1", "m", "blade 1 tip deflection, blade frame (ElastoDyn name)", "beam"});
-  for (int k = 0; k < 2; ++k)
-    c.push_back({std::string("TipRD") + axes[k] + "b1", "deg", "blade 1 tip rotation, blade frame (ElastoDyn name)", "beam"});
+  for (const Group& g : kGroups)
+    for (int k = 0; k < g.axes; ++k)
+      c.push_back({std::string(g.prefix) + "xyz"[k] + g.suffix, g.unit, g.description, "beam"});
   return c;
 }
 

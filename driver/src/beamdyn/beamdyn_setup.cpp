@@ -109,6 +109,8 @@ BeamDynSetup beamdyn_setup(const io::BeamDynCase& bd) {
   s.spectral_radius = bd.primary.rhoinf;
   s.out_list = bd.primary.out_list;
   if (s.dynamic && !(s.dt_s > 0.0)) unsupported(bd.driver.file, "dt", "the time step must be positive");
+  if (s.dynamic && !(s.t_final_s > s.t_initial_s))
+    unsupported(bd.driver.file, "t_final", fmt::format("must exceed t_initial = {}", s.t_initial_s));
   return s;
 }
 

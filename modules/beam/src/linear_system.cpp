@@ -101,10 +101,7 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
     out.rhs.segment<6>(6 * b) += sr.node_loads.tail<6>();
     out.stiffness.diag(b) += sr.stiffness.block<6, 6>(6, 6);
     if (inertia == Inertia::included) out.damping.diag(b) += sr.damping.block<6, 6>(6, 6);
-    if (a < 0) {
-      out.root_load = sr.node_loads.head<6>();
-      continue;
-    }
+    if (a < 0) continue;  // the clamped root carries no unknowns
     out.rhs.segment<6>(6 * a) += sr.node_loads.head<6>();
     out.stiffness.diag(a) += sr.stiffness.block<6, 6>(0, 0);
     out.stiffness.upper(a) += sr.stiffness.block<6, 6>(0, 6);

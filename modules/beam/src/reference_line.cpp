@@ -7,6 +7,9 @@
 #include <stdexcept>
 
 #include <Eigen/Geometry>
+#include <fmt/format.h>
+
+#include "fowtsim/core/error.hpp"
 
 
 namespace fowtsim::beam {
@@ -92,6 +95,11 @@ ReferenceLine ReferenceLine::parametric(std::function<Vec3(double)> position,
     const double w = (s - (*table_s)[hi - 1]) / ((*table_s)[hi] - (*table_s)[hi - 1]);
     const double u = (*table_u)[hi - 1] + w * ((*table_u)[hi] - (*table_u)[hi - 1]);
     const Vec3 t = (position(std::min(u + h, u1)) - position(std::max(u - h, u0))).normalized();
+    // BeamDyn's frame rule divides by t_z: a line turning back (or across) z has no frame here.
+    if (!(t.z() > 1e-6))
+      throw InputError({"beam", std::nullopt, "reference line", "key points must advance along +z"},
+                       fmt::format("the reference line does not advance along z at arclength {:.4g} m "
+                                   "(tangent {:.3g}, {:.3g}, {:.3g})", s, t.x(), t.y(), t.z()));
     const double a = twist_rad(u);
     const Vec3 e1 = Vec3(std::cos(a), std::sin(a), -(t.x() * std::cos(a) + t.y() * std::sin(a)) / t.z()).normalized();
     Mat3 frame;

@@ -11,6 +11,7 @@
 #include "fowtsim/beam/benchmarks.hpp"
 #include "fowtsim/beam/modal.hpp"
 #include "fowtsim/beam/solvers.hpp"
+#include "fowtsim/core/error.hpp"
 #include "fowtsim/core/rotation_vector.hpp"
 #include "test_beams.hpp"
 
@@ -160,4 +161,15 @@ TEST_CASE("natural frequencies of a slender uniform cantilever match Euler-Berno
   // Second order: (1/N)² = 1e-4 at N = 100 bounds the discretisation error; measured 1.9e-5.
   CHECK(std::abs(f[0] / (1.87510 * 1.87510 * scale) - 1.0) < 1e-4);
   CHECK(std::abs(f[2] / (4.69409 * 4.69409 * scale) - 1.0) < 1e-4);
+}
+
+TEST_CASE("a key-point line that turns back along z stops at discretisation", "[unit][beam]") {
+  // BeamDyn's frame rule needs the tangent to advance along z; a hook-shaped line must not run
+  // with NaN frames.
+  BeamDefinition def{ReferenceLine::through_key_points({Vec3(0, 0, 0), Vec3(0, 0, 5), Vec3(3, 0, 6), Vec3(6, 0, 4)},
+                                                       {0.0, 0.0, 0.0, 0.0}),
+                     {}};
+  def.stations = {benchmarks::uniform_station(0.0, Vec6::Ones(), 1.0, Vec3::Ones()),
+                  benchmarks::uniform_station(1.0, Vec6::Ones(), 1.0, Vec3::Ones())};
+  CHECK_THROWS_AS(discretise(def, 20), InputError);
 }

@@ -29,7 +29,6 @@ struct LinearizedBeam {
   BlockTridiagonal damping;     // C
   BlockTridiagonal stiffness;   // K
   VecX rhs;                     // r
-  Vec6 root_load = Vec6::Zero();  // [force; moment about the root] the beam puts on the root, in f
 
   void resize(int nodes);
 };

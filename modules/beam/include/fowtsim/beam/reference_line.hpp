@@ -43,7 +43,8 @@ class ReferenceLine {
   // the chord error of a smooth curve is O(h²)·curvature, far below 1e-8 of the length here).
   // Local frame by BeamDyn's rule: axis 3 the unit tangent t, axis 1 the unit vector along
   // (cos α, sin α, −(t_x cos α + t_y sin α)/t_z) with α = twist(u), axis 2 = axis 3 × axis 1.
-  // For a line along z this is a rotation by α about z. Needs t_z > 0 everywhere.
+  // For a line along z this is a rotation by α about z. Needs t_z > 0 everywhere: evaluating a
+  // point where it is not throws InputError.
   static ReferenceLine parametric(std::function<Vec3(double u)> position,
                                   std::function<double(double u)> twist_rad, double u0, double u1);
 
