@@ -8,6 +8,7 @@ fowtsim_packages=(
   libeigen3-dev libsundials-dev    # linear algebra, ODE integrators
   libhdf5-dev libyaml-cpp-dev      # outputs, input decks
   libfmt-dev libcli11-dev catch2   # formatting, command line, tests
+  libfftw3-dev pkgconf             # FFT synthesis of irregular seas and turbulence
   python3-h5py python3-numpy       # proves outside tools read our HDF5 (regression tier)
 )
 

@@ -24,7 +24,7 @@ DynamicStepper::DynamicStepper(const BeamModel& model, DynamicOptions options)
   const int n = model.node_count();
   system_.resize(n);
   lhs_.resize(n);
-  for (VecX* v : {&v0_, &a0_, &q_, &v1_, &a1_, &work_, &product_}) *v = VecX::Zero(6 * n);
+  for (VecX* v : {&v0_, &a0_, &q_, &v1_, &a1_, &w_damping_, &w_stiffness_}) *v = VecX::Zero(6 * n);
   if (options_.integrator == Integrator::erk)
     erk_ = std::make_unique<Erk>(6 * n, options_.erk_relative_tolerance,
                                  options_.erk_absolute_tolerance);
@@ -43,11 +43,10 @@ void DynamicStepper::step(const BeamInput& input, double dt, BeamState& state) {
     v0_.segment<6>(6 * i) = state.velocity[i];
     a0_.segment<6>(6 * i) = state.acceleration[i];
   }
-  linearize(model_, input, state, Inertia::included, system_);
   if (options_.integrator == Integrator::generalized_alpha)
-    integrate_generalized_alpha(dt, state.acceleration_valid);
+    integrate_generalized_alpha(input, state, dt);
   else
-    integrate_erk(dt);
+    integrate_erk(input, state, dt);
 
   const double t_end = state.time_s + dt;
   if (!q_.allFinite() || !v1_.allFinite())
@@ -78,37 +77,27 @@ void DynamicStepper::step(const BeamInput& input, double dt, BeamState& state) {
 //     = r − αm M a0 − C (v0 + (1−αf)(1−γ) Δt a0) − (1−αf) K (Δt v0 + (½−β) Δt² a0).
 // Velocities and accelerations are resolved in f, so they carry over to the new base unchanged
 // (eqs. 2.78–2.79).
-void DynamicStepper::integrate_generalized_alpha(double dt, bool acceleration_ready) {
+void DynamicStepper::integrate_generalized_alpha(const BeamInput& input, const BeamState& state,
+                                                 double dt) {
   const int n = model_.node_count();
   const double rho = options_.spectral_radius;
   const double am = (2.0 * rho - 1.0) / (rho + 1.0), af = rho / (rho + 1.0);
   const double gamma = 0.5 - am + af, beta = 0.25 * (1.0 - am + af) * (1.0 - am + af);
 
   // Before the first step: the consistent acceleration M a0 = r − C v0 (q0 = 0).
-  if (!acceleration_ready) {
-    system_.damping.multiply(v0_, product_);
+  if (!state.acceleration_valid) {
+    linearize(model_, input, state, Inertia::included, system_);
+    system_.damping.multiply(v0_, w_damping_);
     for (int i = 0; i < n; ++i)
       a0_.segment<6>(6 * i) = system_.mass[i].partialPivLu().solve(
-          Vec6(system_.rhs.segment<6>(6 * i) - product_.segment<6>(6 * i)));
+          Vec6(system_.rhs.segment<6>(6 * i) - w_damping_.segment<6>(6 * i)));
   }
 
-  work_ = v0_ + ((1.0 - af) * (1.0 - gamma) * dt) * a0_;
-  system_.damping.multiply(work_, product_);
-  VecX& rhs = a1_;  // assembled in place, solved in place
-  rhs = system_.rhs - product_;
-  work_ = (dt * (1.0 - af)) * v0_ + ((0.5 - beta) * dt * dt * (1.0 - af)) * a0_;
-  system_.stiffness.multiply(work_, product_);
-  rhs -= product_;
-  for (int i = 0; i < n; ++i) rhs.segment<6>(6 * i) -= am * (system_.mass[i] * a0_.segment<6>(6 * i));
-
-  const double cm = 1.0 - am, cc = (1.0 - af) * gamma * dt, ck = (1.0 - af) * beta * dt * dt;
-  for (int i = 0; i < n; ++i) {
-    lhs_.diag(i) = ck * system_.stiffness.diag(i) + cc * system_.damping.diag(i) + cm * system_.mass[i];
-    if (i + 1 < n) {
-      lhs_.upper(i) = ck * system_.stiffness.upper(i) + cc * system_.damping.upper(i);
-      lhs_.lower(i) = ck * system_.stiffness.lower(i) + cc * system_.damping.lower(i);
-    }
-  }
+  w_damping_ = v0_ + ((1.0 - af) * (1.0 - gamma) * dt) * a0_;
+  w_stiffness_ = (dt * (1.0 - af)) * v0_ + ((0.5 - beta) * dt * dt * (1.0 - af)) * a0_;
+  const StepCombination combination{1.0 - am, (1.0 - af) * gamma * dt, (1.0 - af) * beta * dt * dt,
+                                    am, &w_damping_, &w_stiffness_, &a0_};
+  assemble_step(model_, input, state, combination, lhs_, a1_);  // a1_ holds the rhs, solved in place
   if (!lhs_.factor())
     throw NumericalError({"beam", std::nullopt, "step matrix", "check the mass and inertia of the beam"},
                          "singular step matrix (zero mass or inertia?)");
@@ -117,7 +106,8 @@ void DynamicStepper::integrate_generalized_alpha(double dt, bool acceleration_re
   v1_ = v0_ + dt * ((1.0 - gamma) * a0_ + gamma * a1_);
 }
 
-void DynamicStepper::integrate_erk(double dt) {
+void DynamicStepper::integrate_erk(const BeamInput& input, const BeamState& state, double dt) {
+  linearize(model_, input, state, Inertia::included, system_);
   erk_->integrate(system_, dt, v0_, q_, v1_);
   a1_.setZero();
 }

@@ -22,31 +22,33 @@ void add_node_inertia(const NodeModel& node, const Vec3& x, const Mat3& r,
   const Vec3 c = r * node.mass_offset_m;
   const Mat3 ct = skew(c);
   const Mat3 j_p = r * node.inertia_kg_m2 * r.transpose();
-  const Mat3 i_g = j_p + m * ct * ct;  // inertia about the mass centre, in f
+  const Mat3 i_g = j_p + m * skew_product(c, c);  // inertia about the mass centre, in f
   const Vec3& w = frame.angular_velocity_rad_s;
   const Vec3& w_dot = frame.angular_acceleration_rad_s2;
   const Mat3 wt = skew(w);
-  const Mat3 a = skew(w_dot) + wt * wt;
+  const Mat3 a = skew(w_dot) + skew_product(w, w);
   const Vec3 a0 = frame.acceleration_m_s2 - frame.gravity_m_s2 + a * (x + c);
+  const Vec3 i_w = i_g * w;
+  const Mat3 ct_a = ct * a;
+  const Mat3 wt_i = wt * i_g;
 
   rhs.head<3>() -= m * a0;
-  rhs.tail<3>() -= wt * (i_g * w) + i_g * w_dot + m * ct * a0;
+  rhs.tail<3>() -= w.cross(i_w) + i_g * w_dot + m * c.cross(a0);
 
   stiffness.block<3, 3>(0, 0) += m * a;
-  stiffness.block<3, 3>(0, 3) -= m * a * ct;
-  stiffness.block<3, 3>(3, 0) += m * ct * a;
-  stiffness.block<3, 3>(3, 3) += -m * ct * a * ct + m * skew(a0) * ct +
-                                 wt * (i_g * wt - skew(i_g * w)) + i_g * skew(w_dot) -
-                                 skew(i_g * w_dot);
+  stiffness.block<3, 3>(0, 3) -= m * (a * ct);
+  stiffness.block<3, 3>(3, 0) += m * ct_a;
+  stiffness.block<3, 3>(3, 3) += -m * (ct_a * ct) + m * skew_product(a0, c) + wt_i * wt -
+                                 skew_product(w, i_w) + i_g * skew(w_dot) - skew(i_g * w_dot);
   if (inertia == Inertia::static_only) return;
 
   Mat6 mm;
   mm << m * Mat3::Identity(), -m * ct, m * ct, j_p;
   mass_out = mm;
   damping.block<3, 3>(0, 0) += 2.0 * m * wt;
-  damping.block<3, 3>(0, 3) -= 2.0 * m * wt * ct;
-  damping.block<3, 3>(3, 0) += 2.0 * m * ct * wt;
-  damping.block<3, 3>(3, 3) += -2.0 * m * ct * wt * ct + wt * i_g - skew(i_g * w) + i_g * wt;
+  damping.block<3, 3>(0, 3) -= 2.0 * m * skew_product(w, c);
+  damping.block<3, 3>(3, 0) += 2.0 * m * skew_product(c, w);
+  damping.block<3, 3>(3, 3) += -2.0 * m * (skew_product(c, w) * ct) + wt_i - skew(i_w) + i_g * wt;
   damping += mass_damping * mm;
 }
 
@@ -56,7 +58,48 @@ void add_dead_load(const Vec6& load, const Vec3& arm, Mat6& stiffness, Vec6& rhs
   const Vec3 f = load.head<3>();
   rhs.head<3>() += f;
   rhs.tail<3>() += load.tail<3>() + arm.cross(f);
-  stiffness.block<3, 3>(3, 3) -= skew(f) * skew(arm);
+  stiffness.block<3, 3>(3, 3) -= skew_product(f, arm);
+}
+
+// The 6×6 blocks node i contributes on its own: inertia and dead loads (node and tip).
+struct NodeBlocks {
+  Mat6 mass, damping, stiffness;
+  Vec6 rhs;
+};
+
+void node_blocks(const BeamModel& model, const BeamInput& input, const BeamState& state, int i,
+                 Inertia inertia, NodeBlocks& out) {
+  out.mass.setZero();
+  out.damping.setZero();
+  out.stiffness.setZero();
+  out.rhs.setZero();
+  add_node_inertia(model.nodes[i], state.position_m[i], state.orientation[i], input.frame, inertia,
+                   model.mass_damping_1_s, out.mass, out.damping, out.stiffness, out.rhs);
+  if (!input.node_loads.empty())
+    add_dead_load(input.node_loads[i], state.orientation[i] * model.nodes[i].load_arm_m,
+                  out.stiffness, out.rhs);
+  if (i == model.node_count() - 1)
+    add_dead_load(input.tip_load, state.orientation[i] * model.tip_arm_m, out.stiffness, out.rhs);
+}
+
+// Adds a section's 12×12 tangent to the blocks of its nodes (a < 0: the clamped root).
+void scatter(const Mat12& t, int a, int b, BlockTridiagonal& m) {
+  m.diag(b) += t.block<6, 6>(6, 6);
+  if (a < 0) return;
+  m.diag(a) += t.block<6, 6>(0, 0);
+  m.upper(a) = t.block<6, 6>(0, 6);  // each off-diagonal block belongs to one section
+  m.lower(a) = t.block<6, 6>(6, 0);
+}
+
+// [q_a; q_b] of a nodal vector, zero for the clamped root.
+Vec12 section_pair(const VecX& q, int a, int b) {
+  Vec12 out;
+  if (a < 0)
+    out.head<6>().setZero();
+  else
+    out.head<6>() = q.segment<6>(6 * a);
+  out.tail<6>() = q.segment<6>(6 * b);
+  return out;
 }
 
 }  // namespace
@@ -73,43 +116,64 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
                Inertia inertia, LinearizedBeam& out) {
   const int n = model.node_count();
   out.resize(n);
-  out.damping.set_zero();
-  out.stiffness.set_zero();
-  out.rhs.setZero();
+  NodeBlocks nb;
   for (int i = 0; i < n; ++i) {
-    out.mass[i].setZero();
-    Vec6 r = Vec6::Zero();
-    add_node_inertia(model.nodes[i], state.position_m[i], state.orientation[i], input.frame,
-                     inertia, model.mass_damping_1_s, out.mass[i], out.damping.diag(i),
-                     out.stiffness.diag(i), r);
-    if (!input.node_loads.empty())
-      add_dead_load(input.node_loads[i], state.orientation[i] * model.nodes[i].load_arm_m,
-                    out.stiffness.diag(i), r);
-    out.rhs.segment<6>(6 * i) += r;
+    node_blocks(model, input, state, i, inertia, nb);
+    out.mass[i] = nb.mass;
+    out.damping.diag(i) = nb.damping;
+    out.stiffness.diag(i) = nb.stiffness;
+    out.rhs.segment<6>(6 * i) = nb.rhs;
   }
-  {
-    Vec6 r = Vec6::Zero();
-    add_dead_load(input.tip_load, state.orientation[n - 1] * model.tip_arm_m,
-                  out.stiffness.diag(n - 1), r);
-    out.rhs.segment<6>(6 * (n - 1)) += r;
-  }
+  if (inertia == Inertia::static_only) out.damping.set_zero();
 
-  SectionResult sr;
+  SectionLinearization lin;
+  Mat12 tangent;
   for (const SectionModel& sec : model.sections) {
     const int a = sec.inboard, b = sec.outboard;
-    evaluate_section(sec, pose_of(model, state, a), pose_of(model, state, b), sr);
-    out.rhs.segment<6>(6 * b) += sr.node_loads.tail<6>();
-    out.stiffness.diag(b) += sr.stiffness.block<6, 6>(6, 6);
-    if (inertia == Inertia::included) out.damping.diag(b) += sr.damping.block<6, 6>(6, 6);
-    if (a < 0) continue;  // the clamped root carries no unknowns
-    out.rhs.segment<6>(6 * a) += sr.node_loads.head<6>();
-    out.stiffness.diag(a) += sr.stiffness.block<6, 6>(0, 0);
-    out.stiffness.upper(a) += sr.stiffness.block<6, 6>(0, 6);
-    out.stiffness.lower(a) += sr.stiffness.block<6, 6>(6, 0);
+    linearize_section(sec, pose_of(model, state, a), pose_of(model, state, b), lin);
+    out.rhs.segment<6>(6 * b) += lin.node_loads.tail<6>();
+    if (a >= 0) out.rhs.segment<6>(6 * a) += lin.node_loads.head<6>();
+    section_tangent(lin, sec.stiffness, 1.0, tangent);
+    scatter(tangent, a, b, out.stiffness);
     if (inertia == Inertia::static_only) continue;
-    out.damping.diag(a) += sr.damping.block<6, 6>(0, 0);
-    out.damping.upper(a) += sr.damping.block<6, 6>(0, 6);
-    out.damping.lower(a) += sr.damping.block<6, 6>(6, 0);
+    section_tangent(lin, sec.damping, 0.0, tangent);
+    scatter(tangent, a, b, out.damping);
+  }
+}
+
+void assemble_step(const BeamModel& model, const BeamInput& input, const BeamState& state,
+                   const StepCombination& c, BlockTridiagonal& lhs, VecX& rhs) {
+  const int n = model.node_count();
+  const VecX& w_c = *c.damping_vector;
+  const VecX& w_k = *c.stiffness_vector;
+  const VecX& a0 = *c.acceleration;
+  NodeBlocks nb;
+  for (int i = 0; i < n; ++i) {
+    node_blocks(model, input, state, i, Inertia::included, nb);
+    lhs.diag(i) = c.mass * nb.mass + c.damping * nb.damping + c.stiffness * nb.stiffness;
+    rhs.segment<6>(6 * i) = nb.rhs - nb.damping * w_c.segment<6>(6 * i) -
+                            nb.stiffness * w_k.segment<6>(6 * i) -
+                            c.mass_rhs * (nb.mass * a0.segment<6>(6 * i));
+  }
+
+  // Per section: c K + d C = −G (c C + d D) B − c·geometric, and
+  // −K w_k − C w_c = G (C B w_k + D B w_c) + geometric·w_k.
+  SectionLinearization lin;
+  Mat12 tangent;
+  for (const SectionModel& sec : model.sections) {
+    const int a = sec.inboard, b = sec.outboard;
+    linearize_section(sec, pose_of(model, state, a), pose_of(model, state, b), lin);
+    const Mat6 weight = c.stiffness * sec.stiffness + c.damping * sec.damping;
+    section_tangent(lin, weight, c.stiffness, tangent);
+    scatter(tangent, a, b, lhs);
+
+    const Vec9 rk = reduced(section_pair(w_k, a, b));
+    const Vec9 rc = reduced(section_pair(w_c, a, b));
+    const Vec6 s = lin.resultant + sec.stiffness * (lin.strain_map * rk) +
+                   sec.damping * (lin.strain_map * rc);
+    const Vec12 loads = node_loads_of(lin, s) + lin.geometric * rk;
+    rhs.segment<6>(6 * b) += loads.tail<6>();
+    if (a >= 0) rhs.segment<6>(6 * a) += loads.head<6>();
   }
 }
 

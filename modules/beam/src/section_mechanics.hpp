@@ -10,42 +10,62 @@
 //   γ = R_jᵀ d/Δs − γ_ref,  κ = ψ/Δs − κ_ref                    (eqs. 2.48–2.49, 2.74–2.75)
 // so both strains vanish in the undeformed configuration. Resultants S = [N; M] = C [γ; κ] in
 // the section frame; F = R_j N, M = R_j M in f. Loads on the nodes (moments about the node):
-//   f_a = F,  m_a = M + α d × F;   f_b = −F,  m_b = −M + (1 − α) d × F,
+//   f_a = F,  m_a = M + α d × F;   f_b = −F,  m_b = −M + (1 − α) d × F,     i.e. loads = G S,
 // which balance exactly in total force and moment (momentum is conserved by the assembly).
 //
 // Increments. x ← x + u, R ← exp(θ̃) R with (u, θ) in f. Then
 //   δd = u_b − u_a,  δψ = Ψ (θ_b − θ_a) with Ψ = J_r⁻¹(ψ) R_bᵀ,
 //   δφ_j = θ_a + P (θ_b − θ_a) with P = α R_j J_r(αψ) Ψ   (rotation of the section frame),
-//   δγ = R_jᵀ (δd + d̃ δφ_j)/Δs,  δκ = δψ/Δs.
+//   δγ = R_jᵀ (δd + d̃ δφ_j)/Δs,  δκ = δψ/Δs,                   i.e. δ[γ; κ] = B δq.
+// The tangent of the loads is G δS + (δG) S: −G C B (material) plus the geometric part at fixed S.
+//
+// A rigid translation strains nothing, so the u_b columns of B and of every tangent are the
+// negated u_a columns: only 9 of the 12 columns are computed ("reduced" columns u_a, θ_a, θ_b,
+// acting on [u_a − u_b; θ_a; θ_b]). The section tangents are most of the cost of a step.
 #include "fowtsim/beam/beam_model.hpp"
 #include "fowtsim/core/types.hpp"
 
 namespace fowtsim::beam {
 
 using Mat12 = Eigen::Matrix<double, 12, 12>;
-using Mat6x12 = Eigen::Matrix<double, 6, 12>;
 using Vec12 = Eigen::Matrix<double, 12, 1>;
+using Vec9 = Eigen::Matrix<double, 9, 1>;
+using Mat6x9 = Eigen::Matrix<double, 6, 9>;
+using Mat12x9 = Eigen::Matrix<double, 12, 9>;
 
 struct NodePose {
   Vec3 position_m;
   Mat3 orientation;
 };
 
-struct SectionResult {
-  Vec6 strain;       // [γ; κ] in the section frame
-  Vec6 resultant;    // S = C [γ; κ] (+ D [γ̇; κ̇] when velocities are given), section frame
-  Vec12 node_loads;  // [f_a; m_a; f_b; m_b] in f: loads the section puts on its two nodes
-  Mat6x12 strain_map;  // B: δ[γ; κ] = B δ[u_a; θ_a; u_b; θ_b]
-  Mat12 stiffness;   // K = −∂ node_loads / ∂ increments (material + geometric)
-  Mat12 damping;     // C_str = −G D B: strain-rate damping, node loads per node velocity
+// A section linearised about the base configuration.
+struct SectionLinearization {
+  double alpha = 0.5;     // section position between the nodes (copied from the model)
+  Vec3 chord;             // d = x_b − x_a, in f [m]
+  Mat3 orientation;       // R_j: section frame → f
+  Vec6 strain;            // [γ; κ] in the section frame
+  Vec6 resultant;         // S = C [γ; κ], section frame (elastic only)
+  Vec12 node_loads;       // G S = [f_a; m_a; f_b; m_b] in f
+  Mat6x9 strain_map;      // B on the reduced columns
+  Mat12x9 geometric;      // ∂(node loads)/∂q at fixed S, reduced columns
 };
 
-// Loads and tangents of one section at the base configuration (no damping load: the step solve
-// carries strain-rate damping in the damping matrix).
-void evaluate_section(const SectionModel& sec, const NodePose& a, const NodePose& b,
-                      SectionResult& out);
+void linearize_section(const SectionModel& sec, const NodePose& a, const NodePose& b,
+                       SectionLinearization& out);
 
-// Loads only (no tangent), with optional strain-rate damping: for outputs and tests.
+// [f_a; m_a; f_b; m_b] of a section-frame resultant s: G s.
+Vec12 node_loads_of(const SectionLinearization& lin, const Vec6& s);
+
+// Node increments [u_a; θ_a; u_b; θ_b] → the reduced vector [u_a − u_b; θ_a; θ_b].
+Vec9 reduced(const Vec12& q);
+
+// The 12×12 tangent −G W B − g·(geometric part): with W = C, g = 1 the stiffness
+// K = −∂(node loads)/∂q; with W = D, g = 0 the strain-rate damping; with W = k C + c D, g = k
+// the combination k K + c C_str the implicit step needs, at the cost of one.
+void section_tangent(const SectionLinearization& lin, const Mat6& weight, double geometric_weight,
+                     Mat12& out);
+
+// Loads only, with optional strain-rate damping D B q̇: for outputs and tests.
 Vec12 section_loads(const SectionModel& sec, const NodePose& a, const NodePose& b,
                     const Vec6* velocity_a = nullptr, const Vec6* velocity_b = nullptr);
 

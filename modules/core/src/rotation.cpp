@@ -9,13 +9,6 @@
 
 namespace fowtsim {
 
-Mat3 skew(const Vec3& a) {
-  Mat3 m;
-  m << 0.0, -a.z(), a.y(),  //
-      a.z(), 0.0, -a.x(),   //
-      -a.y(), a.x(), 0.0;
-  return m;
-}
 
 Vec3 axial(const Mat3& m) {
   return 0.5 * Vec3(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1));

@@ -41,6 +41,19 @@ enum class Inertia { included, static_only };
 void linearize(const BeamModel& model, const BeamInput& input, const BeamState& state,
                Inertia inertia, LinearizedBeam& out);
 
+// The matrix and right-hand side of an implicit step, assembled in one pass without forming M, C
+// and K apart (the section tangents are most of a step's cost; combined they are built once):
+//   A = m M + c C + k K,   b = r − C w_c − K w_k − μ M a
+struct StepCombination {
+  double mass = 1.0, damping = 0.0, stiffness = 0.0;  // m, c, k
+  double mass_rhs = 0.0;                               // μ
+  const VecX* damping_vector = nullptr;                // w_c (6 per node)
+  const VecX* stiffness_vector = nullptr;              // w_k
+  const VecX* acceleration = nullptr;                  // a
+};
+void assemble_step(const BeamModel& model, const BeamInput& input, const BeamState& state,
+                   const StepCombination& combination, BlockTridiagonal& lhs, VecX& rhs);
+
 // Loads the beam puts on its root (force; moment about the root point), in f, including
 // strain-rate damping of the state's velocities.
 Vec6 root_reaction(const BeamModel& model, const BeamState& state);

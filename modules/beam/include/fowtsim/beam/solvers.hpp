@@ -75,14 +75,14 @@ class DynamicStepper {
   struct Erk;  // ARKODE state of the erk integrator (src/erk_integrator.hpp)
 
  private:
-  void integrate_generalized_alpha(double dt, bool acceleration_ready);
-  void integrate_erk(double dt);
+  void integrate_generalized_alpha(const BeamInput& input, const BeamState& state, double dt);
+  void integrate_erk(const BeamInput& input, const BeamState& state, double dt);
 
   const BeamModel& model_;
   DynamicOptions options_;
   LinearizedBeam system_;
   BlockTridiagonal lhs_;
-  VecX v0_, a0_, q_, v1_, a1_, work_, product_;
+  VecX v0_, a0_, q_, v1_, a1_, w_damping_, w_stiffness_;
   std::unique_ptr<Erk> erk_;
 };
 

@@ -9,8 +9,19 @@
 
 namespace fowtsim {
 
-// Skew-symmetric matrix ã with ã b = a × b.
-Mat3 skew(const Vec3& a);
+// Skew-symmetric matrix ã with ã b = a × b. Inline: it sits in the beam's innermost loops.
+inline Mat3 skew(const Vec3& a) {
+  Mat3 m;
+  m << 0.0, -a.z(), a.y(),  //
+      a.z(), 0.0, -a.x(),   //
+      -a.y(), a.x(), 0.0;
+  return m;
+}
+
+// ã b̃ = b aᵀ − (a·b) I: a product of two skew matrices without the 3×3 product.
+inline Mat3 skew_product(const Vec3& a, const Vec3& b) {
+  return b * a.transpose() - a.dot(b) * Mat3::Identity();
+}
 
 // Axial vector of the skew-symmetric part of m: axial(skew(a)) = a for every a.
 Vec3 axial(const Mat3& m);
