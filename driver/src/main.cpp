@@ -16,6 +16,7 @@
 #include "fowtsim/io/readers.hpp"
 #include "run/run_scene.hpp"
 #include "scenes/beam_scene.hpp"
+#include "scenes/platform_scene.hpp"
 #include "scenes/scene_schema.hpp"
 
 using namespace fowtsim;
@@ -100,12 +101,12 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> cases;
   auto* verify = app.add_subcommand("verify", "run verification cases against analytic or published answers");
-  verify->add_option("cases", cases, "cases (default all): coupling, beam-rollup, beam-curved, beam-timestep, beam-beamdyn, beam-frequencies");
+  verify->add_option("cases", cases, "cases (default all): coupling, beam-rollup, beam-curved, beam-timestep, beam-beamdyn, beam-frequencies, sea");
   std::string shared_dir = "../shared";
   verify->add_option("--shared", shared_dir, "directory holding reference/ (default ../shared)");
   std::vector<std::string> bench_cases;
   auto* bench = app.add_subcommand("bench", "benchmark run time against error");
-  bench->add_option("cases", bench_cases, "cases (default all): coupling, beam");
+  bench->add_option("cases", bench_cases, "cases (default all): coupling, beam, hydro, waves");
   bench->add_option("--shared", shared_dir, "directory holding reference/ (default ../shared)");
 
   try {
@@ -114,8 +115,10 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : kExitInput;
   }
   if (help_deck) {
-    fmt::print("Toy coupled-oscillator scene:\n{}\nBeam scene (a deck with a top-level `beam`):\n{}",
-               io::describe_schema(scene_schema()), io::describe_schema(beam_scene_schema()));
+    fmt::print("Toy coupled-oscillator scene:\n{}\nBeam scene (a deck with a top-level `beam`):\n{}\n"
+               "Platform-loads scene (a deck with a top-level `platform_motion`):\n{}",
+               io::describe_schema(scene_schema()), io::describe_schema(beam_scene_schema()),
+               io::describe_schema(platform_scene_schema()));
     return 0;
   }
   if (app.get_subcommands().empty()) {

@@ -23,7 +23,7 @@ std::filesystem::path rtest(const std::string& name) {
 
 BeamDynRun run_rtest(const std::string& name, int segments) {
   return run_beamdyn_reference(rtest(name) / "bd_driver.inp", rtest(name) / "bd_driver.out", segments,
-                               testing::scratch_dir("beamdyn") / name);
+                               testing::scratch_dir("beamdyn_" + name) / name);
 }
 
 }  // namespace
@@ -100,7 +100,7 @@ TEST_CASE("NREL 5MW blade hanging under gravity (BeamDyn Az00, 30 s)", "[verific
 TEST_CASE("NREL 5MW blade spinning at 12.1 rpm under gravity (seed Table 2.3)", "[verification][beamdyn]") {
   const auto dir = testing::shared_dir_or_skip() / "reference/openfast-runs/bd_5MW_rotating_gravity";
   const BeamDynRun run = run_beamdyn_reference(dir / "bd_driver.inp", dir / "bd_driver.out", 48,
-                                               testing::scratch_dir("beamdyn") / "bd_5MW_rotating_gravity");
+                                               testing::scratch_dir("beamdyn_5MW_rotating") / "bd_5MW_rotating_gravity");
   // Seed Table 2.3 over the last 180 s of 300 s: RMS(MBBT − BeamDyn)/RMS(BeamDyn) was 1.23 %
   // edgewise (TipTDyr), 5.96 % flapwise (TipTDxr), 2.00 % axial (TipTDzr; its value is the
   // fluctuation about a 12 mm centrifugal stretch, so the std ratio is the comparable measure).

@@ -17,9 +17,12 @@ std::vector<VerificationRow> verify_beam_timestep(std::FILE* out);
 std::vector<VerificationRow> verify_beam_beamdyn(std::FILE* out);
 std::vector<VerificationRow> verify_beam_frequencies(std::FILE* out);
 void bench_beam(std::FILE* out);
+std::vector<VerificationRow> verify_sea(std::FILE* out);  // verify_sea.cpp
+void bench_hydro(std::FILE* out);
+void bench_waves(std::FILE* out);
 
 std::vector<std::string> verification_case_names() {
-  return {"coupling", "beam-rollup", "beam-curved", "beam-timestep", "beam-beamdyn", "beam-frequencies"};
+  return {"coupling", "beam-rollup", "beam-curved", "beam-timestep", "beam-beamdyn", "beam-frequencies", "sea"};
 }
 
 std::vector<VerificationRow> run_verification_case(const std::string& name, std::FILE* out) {
@@ -29,19 +32,22 @@ std::vector<VerificationRow> run_verification_case(const std::string& name, std:
   if (name == "beam-timestep") return verify_beam_timestep(out);
   if (name == "beam-beamdyn") return verify_beam_beamdyn(out);
   if (name == "beam-frequencies") return verify_beam_frequencies(out);
+  if (name == "sea") return verify_sea(out);
   std::string known;
   for (const std::string& n : verification_case_names()) known += (known.empty() ? "" : ", ") + n;
   throw InputError({"verify", {}, name, "known cases: " + known}, fmt::format("unknown verification case '{}'", name));
 }
 
-std::vector<std::string> benchmark_case_names() { return {"coupling", "beam"}; }
+std::vector<std::string> benchmark_case_names() { return {"coupling", "beam", "hydro", "waves"}; }
 
 // Wall time against error for each coupling mode over 200 s of the toy problem. Times are from
 // this one run on this machine; compare them as ratios.
 void run_benchmark_case(const std::string& name, std::FILE* out) {
   if (name == "beam") return bench_beam(out);
+  if (name == "hydro") return bench_hydro(out);
+  if (name == "waves") return bench_waves(out);
   if (name != "coupling") {
-    throw InputError({"bench", {}, name, "known cases: coupling, beam"}, fmt::format("unknown benchmark case '{}'", name));
+    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves"}, fmt::format("unknown benchmark case '{}'", name));
   }
   const ToyProblem problem = study_problem();
   constexpr double kTmax = 200.0;

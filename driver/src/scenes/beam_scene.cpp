@@ -5,15 +5,13 @@
 #include "beamdyn/beamdyn_channels.hpp"
 #include "beamdyn/beamdyn_run.hpp"
 #include "beamdyn/beamdyn_setup.hpp"
+#include "decks/deck_helpers.hpp"
 #include "fowtsim/core/error.hpp"
 
 namespace fowtsim::driver {
 namespace {
 
 using io::Schema;
-
-// A fixed-length vector of numbers; its unit is in the key name.
-Schema vec(std::size_t n, const char* doc) { return Schema::sequence(Schema::number()).min_items(n).max_items(n).doc(doc); }
 
 Schema station_schema() {
   return Schema::map({
@@ -34,23 +32,23 @@ Schema beam_schema() {
                          .doc("integrator of the locally linear system in each step")},
       {"spectral_radius", Schema::number().at_least(0.0).at_most(1.0).default_value(0.0)
                               .doc("generalized-α ρ∞ (0: most high-frequency dissipation)")},
-      {"key_points_m", Schema::sequence(vec(3, "x, y, z")).min_items(2)
+      {"key_points_m", Schema::sequence(number_vector(3, "x, y, z")).min_items(2)
                            .doc("reference line through these points, root first, z increasing")},
       {"twist_deg", Schema::sequence(Schema::number()).min_items(2).doc("structural twist at each key point (BeamDyn sign)")},
       {"fit_degree", Schema::integer().at_least(1).at_most(20).default_value(5)
                          .doc("degree of the least-squares polynomial through the key points (BeamDyn's order_elem)")},
       {"stations", Schema::sequence(station_schema()).min_items(1).doc("sectional properties, eta ascending")},
-      {"damping_mu_s", vec(6, "stiffness-proportional damping per component (BeamDyn mu)").optional()},
+      {"damping_mu_s", number_vector(6, "stiffness-proportional damping per component (BeamDyn mu)").optional()},
       {"mass_damping_1_s", Schema::number().unit("1_s").at_least(0.0).default_value(0.0).doc("mass-proportional damping μ_M")},
   });
 }
 
 Schema loads_schema() {
   return Schema::map({
-      {"distributed_force_N_m", vec(3, "dead distributed force per length, global frame").optional()},
-      {"distributed_moment_N_m_m", vec(3, "dead distributed moment per length, global frame").optional()},
-      {"tip_force_N", vec(3, "dead tip force, global frame").optional()},
-      {"tip_moment_N_m", vec(3, "dead tip moment, global frame").optional()},
+      {"distributed_force_N_m", number_vector(3, "dead distributed force per length, global frame").optional()},
+      {"distributed_moment_N_m_m", number_vector(3, "dead distributed moment per length, global frame").optional()},
+      {"tip_force_N", number_vector(3, "dead tip force, global frame").optional()},
+      {"tip_moment_N_m", number_vector(3, "dead tip moment, global frame").optional()},
   });
 }
 
@@ -58,18 +56,6 @@ Vec3 vec3_or_zero(const io::ValidatedDeck& d, const std::string& path) {
   if (!d.has(path)) return Vec3::Zero();
   const std::vector<double> v = d.numbers(path);
   return Vec3(v[0], v[1], v[2]);
-}
-
-Mat6 mat6(const std::vector<double>& v) {
-  Mat6 m;
-  for (int r = 0; r < 6; ++r)
-    for (int c = 0; c < 6; ++c) m(r, c) = v[6 * r + c];
-  return m;
-}
-
-std::string where(const io::ValidatedDeck& deck, const std::string& path) {
-  const io::SourceLocation loc = deck.location(path);
-  return fmt::format("{}:{}:{}: {}", loc.file, loc.line, loc.column, path);
 }
 
 }  // namespace
@@ -88,10 +74,10 @@ Schema beam_scene_schema() {
                  }).optional().doc("what to write")},
       {"beam", beam_schema().doc("the beam: reference line, sections, damping, discretisation")},
       {"root", Schema::map({
-                   {"position_m", vec(3, "root position, global frame").optional()},
-                   {"angular_velocity_rad_s", vec(3, "constant angular velocity of the root about the global origin").optional()},
+                   {"position_m", number_vector(3, "root position, global frame").optional()},
+                   {"angular_velocity_rad_s", number_vector(3, "constant angular velocity of the root about the global origin").optional()},
                }).optional().doc("root motion; absent = fixed at the origin")},
-      {"gravity_m_s2", vec(3, "gravity, global frame").optional()},
+      {"gravity_m_s2", number_vector(3, "gravity, global frame").optional()},
       {"loads", loads_schema().optional().doc("dead external loads")},
   });
 }
@@ -129,7 +115,7 @@ RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& prog
     if (!(eta > last_eta))
       throw InputError({"beam", std::nullopt, "eta", ""}, where(deck, fmt::format("beam.stations[{}].eta", i)) + ": eta must increase");
     last_eta = eta;
-    setup.definition.stations.push_back({eta, mat6(st.numbers("stiffness")), mat6(st.numbers("mass"))});
+    setup.definition.stations.push_back({eta, mat6(st, "stiffness"), mat6(st, "mass")});
   }
   if (b.has("damping_mu_s")) {
     const auto mu = b.numbers("damping_mu_s");

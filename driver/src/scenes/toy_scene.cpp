@@ -8,10 +8,12 @@
 #include <fmt/format.h>
 
 #include "coupling/multi_rate_scheduler.hpp"
+#include "decks/deck_helpers.hpp"
 #include "fowtsim/core/channels.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/version.hpp"
 #include "fowtsim/toy/exact_solution.hpp"
+#include "run/channel_selection.hpp"
 #include "run/output_set.hpp"
 
 namespace fowtsim::driver {
@@ -28,11 +30,6 @@ Params read_oscillator(const io::ValidatedDeck& d) {
   p.initial_position_m = d.number("initial_position_m");
   p.divergence_limit_m = d.number("divergence_limit_m");
   return p;
-}
-
-std::string where(const io::ValidatedDeck& deck, std::string_view path) {
-  const io::SourceLocation loc = deck.location(path);
-  return fmt::format("{}:{}:{}: {}", loc.file, loc.line, loc.column, path);
 }
 
 CouplingSettings read_settings(const io::ValidatedDeck& deck, const RunRequest& request) {
@@ -73,29 +70,6 @@ std::array<double, kChannelCount> values_of(const Scheduler& s, const toy::Exact
           s.fast_state().velocity_m_s, s.fast_output().root_loads.force_N.x(), ze[0], ze[2], x - ze[0]};
 }
 
-// Indices of the requested channels in all_channels() order; all when the deck lists none.
-std::vector<std::size_t> select_channels(const io::ValidatedDeck& deck, const std::vector<ChannelInfo>& all) {
-  ChannelRegistry registry;
-  for (const ChannelInfo& c : all) registry.add(c);
-  std::vector<std::size_t> picked;
-  if (!deck.has("output.channels")) {
-    for (std::size_t i = 0; i < all.size(); ++i) picked.push_back(i);
-    return picked;
-  }
-  const std::vector<std::string> names = deck.strings("output.channels");
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    const auto index = registry.find(names[i]);
-    if (!index) {
-      std::string known;
-      for (const ChannelInfo& c : all) known += (known.empty() ? "" : ", ") + c.name;
-      throw InputError({"toy", {}, names[i], "available: " + known},
-                       where(deck, fmt::format("output.channels[{}]", i)) + ": unknown channel '" + names[i] + "'");
-    }
-    picked.push_back(*index);
-  }
-  return picked;
-}
-
 }  // namespace
 
 RunReport run_toy_scene(const io::ValidatedDeck& deck, const RunRequest& request, const ProgressCallback& progress) {
@@ -103,7 +77,7 @@ RunReport run_toy_scene(const io::ValidatedDeck& deck, const RunRequest& request
   const auto slow = read_oscillator<toy::SlowOscillator::Params>(deck.section("toy_oscillators.slow"));
   const auto fast = read_oscillator<toy::FastOscillator::Params>(deck.section("toy_oscillators.fast"));
   const std::vector<ChannelInfo> all = all_channels(slow, fast);
-  const std::vector<std::size_t> picked = select_channels(deck, all);
+  const std::vector<std::size_t> picked = select_channels(deck, all, "toy");
   std::vector<ChannelInfo> written;
   for (std::size_t i : picked) written.push_back(all[i]);
 

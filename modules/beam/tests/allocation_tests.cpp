@@ -7,21 +7,13 @@
 
 #include <catch2/catch.hpp>
 
+#include "fowtsim/testing/allocation_counter.hpp"
+
 #include "fowtsim/beam/benchmarks.hpp"
 #include "fowtsim/beam/solvers.hpp"
 
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  if (counting) ++allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+using fowtsim::testing::allocations;
+using fowtsim::testing::counting;
 
 using namespace fowtsim;
 using namespace fowtsim::beam;

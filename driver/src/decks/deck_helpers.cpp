@@ -1,0 +1,46 @@
+#include "decks/deck_helpers.hpp"
+
+#include <fmt/format.h>
+
+namespace fowtsim::driver {
+
+io::Schema number_vector(std::size_t n, const char* doc) {
+  return io::Schema::sequence(io::Schema::number()).min_items(n).max_items(n).doc(doc);
+}
+
+io::Schema matrix6(const char* doc) { return number_vector(36, doc); }
+
+Vec3 vec3(const io::ValidatedDeck& deck, const std::string& path) {
+  const std::vector<double> v = deck.numbers(path);
+  return Vec3(v[0], v[1], v[2]);
+}
+
+Vec6 vec6(const io::ValidatedDeck& deck, const std::string& path) {
+  const std::vector<double> v = deck.numbers(path);
+  Vec6 out;
+  for (int i = 0; i < 6; ++i) out[i] = v[i];
+  return out;
+}
+
+Mat6 mat6(const io::ValidatedDeck& deck, const std::string& path) {
+  Mat6 m = Mat6::Zero();
+  if (!deck.has(path)) return m;
+  const std::vector<double> v = deck.numbers(path);
+  for (int r = 0; r < 6; ++r)
+    for (int c = 0; c < 6; ++c) m(r, c) = v[6 * r + c];
+  return m;
+}
+
+std::string where(const io::ValidatedDeck& deck, const std::string& path) {
+  const io::SourceLocation loc = deck.location(path);
+  const std::string full = deck.path().empty() ? path : deck.path() + "." + path;
+  return fmt::format("{}:{}:{}: {}", loc.file, loc.line, loc.column, full);
+}
+
+void rethrow_located(const io::ValidatedDeck& section, const InputError& error) {
+  const io::SourceLocation loc = section.location("");
+  throw InputError(error.context(),
+                   fmt::format("{}:{}:{}: {}: {}", loc.file, loc.line, loc.column, section.path(), error.message()));
+}
+
+}  // namespace fowtsim::driver

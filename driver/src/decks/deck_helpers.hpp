@@ -1,0 +1,29 @@
+#pragma once
+// Small helpers shared by the deck-section readers: fixed-length vectors and matrices, and the
+// "file:line:col: key" prefix of a message about a value that passed the schema but not a
+// module's own validation.
+#include <string>
+
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/core/types.hpp"
+#include "fowtsim/io/schema.hpp"
+
+namespace fowtsim::driver {
+
+// A sequence of exactly n numbers; the unit is in the key name.
+io::Schema number_vector(std::size_t n, const char* doc);
+// A 6×6 matrix written as 36 numbers, row by row.
+io::Schema matrix6(const char* doc);
+
+Vec3 vec3(const io::ValidatedDeck& deck, const std::string& path);
+Vec6 vec6(const io::ValidatedDeck& deck, const std::string& path);
+Mat6 mat6(const io::ValidatedDeck& deck, const std::string& path);  // zero when absent
+
+// "file:line:col: path" of a value in the deck.
+std::string where(const io::ValidatedDeck& deck, const std::string& path);
+
+// A module's own validation failed on values the schema let through: re-throw its InputError
+// prefixed with the file:line of the deck section (the message names the keys).
+[[noreturn]] void rethrow_located(const io::ValidatedDeck& section, const InputError& error);
+
+}  // namespace fowtsim::driver

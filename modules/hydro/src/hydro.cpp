@@ -1,0 +1,207 @@
+#include "fowtsim/hydro/hydro.hpp"
+
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include <fmt/format.h>
+
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/core/rotation.hpp"
+#include "fowtsim/hydro/hydrostatics.hpp"
+#include "fowtsim/hydro/member_geometry.hpp"
+#include "morison.hpp"
+
+namespace fowtsim::hydro {
+namespace {
+
+[[noreturn]] void misuse(const std::string& variable, const std::string& message) {
+  throw InputError({"hydro", std::nullopt, variable, "size Input with make_input(params)"}, message);
+}
+
+void check_sizes(const Params& params, const Hydro::Input& in) {
+  const Eigen::Index n = node_count(params);
+  if (in.fluid_velocity_m_s.cols() != n || in.fluid_acceleration_m_s2.cols() != n ||
+      in.dynamic_pressure_Pa.size() != n) {
+    misuse("fluid kinematics",
+           fmt::format("input.fluid_*.cols() = {}/{}/{} differs from node_count(params) = {}",
+                       in.fluid_velocity_m_s.cols(), in.fluid_acceleration_m_s2.cols(),
+                       in.dynamic_pressure_Pa.size(), n));
+  }
+  if (params.surface == SurfaceModel::wave_elevation &&
+      in.surface_elevation_m.size() != static_cast<Eigen::Index>(params.members.size())) {
+    misuse("surface_elevation_m", fmt::format("input.surface_elevation_m.size() = {} differs from "
+                                              "params.members.size() = {}",
+                                              in.surface_elevation_m.size(), params.members.size()));
+  }
+}
+
+// The platform pose must be finite and T_gb a rotation; a drifted or NaN pose would otherwise
+// turn into silently wrong buoyancy.
+void check_pose(const FrameMotion& pose, double time_s) {
+  const auto fail = [&](const char* variable, const char* message) {
+    throw NumericalError({"hydro", time_s, variable,
+                          "check the platform state handed to hydro (multibody step size)"},
+                         message);
+  };
+  if (!pose.position_m.allFinite() || !pose.orientation.allFinite()) {
+    fail("platform pose", "non-finite platform position or orientation");
+  }
+  if (!pose.velocity_m_s.allFinite() || !pose.angular_velocity_rad_s.allFinite()) {
+    fail("platform velocity", "non-finite platform velocity or angular velocity");
+  }
+  if ((pose.orientation.transpose() * pose.orientation - Mat3::Identity()).cwiseAbs().maxCoeff() > 1e-6) {
+    fail("platform orientation", "orientation is not a rotation matrix (|T^T T - I| > 1e-6)");
+  }
+}
+
+double member_surface(const Params& params, const Eigen::Ref<const VecX>& elevation, int m) {
+  return params.surface == SurfaceModel::wave_elevation ? elevation[m] : 0.0;
+}
+
+Vec6 added_linear_load(const Params& params, const FrameMotion& pose, const Vec3& omega_g) {
+  Vec6 q, qdot;
+  q << pose.position_m, matrix_to_euler123(pose.orientation);
+  qdot << pose.velocity_m_s, omega_g;
+  const Vec6 quadratic = qdot.cwiseAbs().cwiseProduct(qdot);
+  return params.added_force - params.added_stiffness * q - params.added_damping * qdot -
+         params.added_quadratic_damping * quadratic;
+}
+
+}  // namespace
+
+Vec3 current_velocity(const CurrentParams& c, double z) {
+  double speed = 0.0;
+  switch (c.profile) {
+    case CurrentParams::Profile::none: return Vec3::Zero();
+    case CurrentParams::Profile::uniform: speed = c.surface_speed_m_s; break;
+    case CurrentParams::Profile::power_law: {
+      // Above z = 0 (wave-elevation strips) the surface value holds; below −d there is none.
+      const double depth_fraction = (std::min(z, 0.0) + c.reference_depth_m) / c.reference_depth_m;
+      speed = depth_fraction <= 0.0 ? 0.0 : c.surface_speed_m_s * std::pow(depth_fraction, c.power_law_exponent);
+      break;
+    }
+  }
+  return speed * Vec3(std::cos(c.heading_rad), std::sin(c.heading_rad), 0.0);
+}
+
+Hydro::Input make_input(const Params& params) {
+  Hydro::Input in;
+  const Eigen::Index n = node_count(params);
+  in.fluid_velocity_m_s = Points::Zero(3, n);
+  in.fluid_acceleration_m_s2 = Points::Zero(3, n);
+  in.dynamic_pressure_Pa = VecX::Zero(n);
+  in.surface_elevation_m = VecX::Zero(static_cast<Eigen::Index>(params.members.size()));
+  return in;
+}
+
+void strip_points(const Params& params, const FrameMotion& platform,
+                  const Eigen::Ref<const VecX>& surface_elevation_m, Eigen::Ref<Points> out) {
+  if (params.surface == SurfaceModel::wave_elevation &&
+      surface_elevation_m.size() != static_cast<Eigen::Index>(params.members.size())) {
+    misuse("surface_elevation_m", fmt::format("surface_elevation_m.size() = {} differs from "
+                                              "params.members.size() = {}",
+                                              surface_elevation_m.size(), params.members.size()));
+  }
+  if (out.cols() != node_count(params)) {
+    misuse("strip points", fmt::format("out.cols() = {} differs from node_count(params) = {}",
+                                       out.cols(), node_count(params)));
+  }
+  int offset = 0;
+  for (int m = 0; m < static_cast<int>(params.members.size()); ++m) {
+    const MemberParams& member = params.members[m];
+    const MemberGeometry g = place_member(member, platform.position_m, platform.orientation);
+    const AxisInterval wet = submerged_axis_interval(g, member_surface(params, surface_elevation_m, m));
+    const double ds = wet.length_m() / member.strips;
+    for (int i = 0; i < member.strips; ++i) out.col(offset + i) = g.point_at(wet.begin_m + (i + 0.5) * ds);
+    out.col(offset + member.strips) = g.end_a_m;
+    out.col(offset + member.strips + 1) = g.point_at(g.length_m);
+    offset += member.strips + 2;
+  }
+}
+
+void waterline_points(const Params& params, const FrameMotion& platform, Eigen::Ref<Points> out) {
+  if (out.cols() != static_cast<Eigen::Index>(params.members.size())) {
+    misuse("waterline points", fmt::format("out.cols() = {} differs from params.members.size() = {}",
+                                           out.cols(), params.members.size()));
+  }
+  for (int m = 0; m < static_cast<int>(params.members.size()); ++m) {
+    out.col(m) = waterline_point(place_member(params.members[m], platform.position_m, platform.orientation));
+  }
+}
+
+Hydro::Output Hydro::outputs(const Params& params, const Input& in, const State&) {
+  check_sizes(params, in);
+  check_pose(in.platform, in.time_s);
+  Output out;
+  const double rho_g = params.water_density_kg_m3 * params.gravity_m_s2;
+  const detail::PlatformMotion motion{in.platform.position_m, in.platform.velocity_m_s,
+                                      in.platform.orientation * in.platform.angular_velocity_rad_s};
+  SubmergedVolume displaced;
+  int offset = 0;
+  for (int m = 0; m < static_cast<int>(params.members.size()); ++m) {
+    const MemberParams& member = params.members[m];
+    const MemberGeometry g = place_member(member, motion.reference_m, in.platform.orientation);
+    const SubmergedVolume v = submerged_volume(g, 0.0, params.hydrostatic_quadrature_points);
+    displaced.volume_m3 += v.volume_m3;
+    displaced.first_moment_m4 += v.first_moment_m4;
+    const double surface_z = member_surface(params, in.surface_elevation_m, m);
+    if (!std::isfinite(surface_z)) {
+      throw NumericalError({"hydro", in.time_s, fmt::format("surface_elevation_m[{}]", m),
+                            "check the wave elevation handed to hydro"}, "non-finite wave elevation");
+    }
+    detail::add_member_morison(params, member, g, submerged_axis_interval(g, surface_z), surface_z, in,
+                               offset, motion, out.morison, out.added_mass);
+    offset += member.strips + 2;
+  }
+  // Buoyancy ρ g V k at the centre of buoyancy; its moment about r_ref is (r_B − r_ref) × F.
+  out.submerged_volume_m3 = displaced.volume_m3;
+  const Vec3 buoyancy(0.0, 0.0, rho_g * displaced.volume_m3);
+  out.buoyancy.head<3>() = buoyancy;
+  out.buoyancy.tail<3>() = (displaced.first_moment_m4 - displaced.volume_m3 * motion.reference_m).cross(
+      Vec3(0.0, 0.0, rho_g));
+  out.centre_of_buoyancy_m = displaced.volume_m3 > 0.0 ? Vec3(displaced.first_moment_m4 / displaced.volume_m3)
+                                                       : motion.reference_m;
+  out.added_linear = added_linear_load(params, in.platform, motion.angular_velocity);
+  out.total = out.buoyancy + out.morison + out.added_linear;
+  if (!out.total.allFinite() || !out.added_mass.allFinite()) {
+    throw NumericalError({"hydro", in.time_s, "hydro load", "check the platform state and wave inputs"},
+                         "non-finite hydrodynamic load or added mass");
+  }
+  return out;
+}
+
+std::vector<ChannelInfo> Hydro::channels(const Params&) {
+  std::vector<ChannelInfo> all;
+  const char* axes[3] = {"x", "y", "z"};
+  const struct {
+    const char* prefix;
+    const char* what;
+  } parts[4] = {{"Hydro", "total hydrodynamic + hydrostatic load (buoyancy, Morison, added linear)"},
+                {"B1HDS", "hydrostatic load (nonlinear buoyancy)"},
+                {"HydroMor", "Morison load (strips and end effects, without the added-mass reaction)"},
+                {"HydroAdd", "additional linear load (AddF0, AddCLin, AddBLin, AddBQuad)"}};
+  for (const auto& part : parts) {
+    for (const char* a : axes) {
+      all.push_back({fmt::format("{}F{}i", part.prefix, a), "N",
+                     fmt::format("{}: force along inertial {}", part.what, a), "hydro"});
+    }
+    for (const char* a : axes) {
+      all.push_back({fmt::format("{}M{}i", part.prefix, a), "N-m",
+                     fmt::format("{}: moment about inertial {} at the platform reference point", part.what, a),
+                     "hydro"});
+    }
+  }
+  return all;
+}
+
+std::array<double, kChannelCount> channel_values(const Hydro::Output& o) {
+  std::array<double, kChannelCount> v{};
+  const Vec6* parts[4] = {&o.total, &o.buoyancy, &o.morison, &o.added_linear};
+  for (int p = 0; p < 4; ++p) {
+    for (int i = 0; i < 6; ++i) v[6 * p + i] = (*parts[p])[i];
+  }
+  return v;
+}
+
+}  // namespace fowtsim::hydro
