@@ -16,6 +16,7 @@
 #include "fowtsim/io/readers.hpp"
 #include "run/run_scene.hpp"
 #include "scenes/beam_scene.hpp"
+#include "scenes/floating_scene.hpp"
 #include "scenes/platform_scene.hpp"
 #include "scenes/scene_schema.hpp"
 
@@ -116,9 +117,10 @@ int main(int argc, char** argv) {
   }
   if (help_deck) {
     fmt::print("Toy coupled-oscillator scene:\n{}\nBeam scene (a deck with a top-level `beam`):\n{}\n"
-               "Platform-loads scene (a deck with a top-level `platform_motion`):\n{}",
+               "Platform-loads scene (a deck with a top-level `platform_motion`):\n{}\n"
+               "Floating-turbine scene (a deck with a top-level `structure`):\n{}",
                io::describe_schema(scene_schema()), io::describe_schema(beam_scene_schema()),
-               io::describe_schema(platform_scene_schema()));
+               io::describe_schema(platform_scene_schema()), io::describe_schema(floating_scene_schema()));
     return 0;
   }
   if (app.get_subcommands().empty()) {

@@ -1,5 +1,5 @@
 #pragma once
-// Cost of the mooring per call, for `fowtsim bench mooring` (DESIGN.md §8: numbers printed by a
+// Cost of the mooring per call, for `fowtsim bench hydro` (DESIGN.md §8: numbers printed by a
 // tool, never asserted). Each row times one way of calling the module along the same platform
 // trajectory (surge 10 ± 4 m, heave ± 0.5 m, pitch 3 ± 2°, yaw ± 2°, 60 s at 0.05 s steps).
 #include <string>

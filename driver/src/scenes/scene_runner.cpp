@@ -1,0 +1,73 @@
+#include "scenes/scene_runner.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/core/version.hpp"
+#include "run/output_set.hpp"
+
+namespace fowtsim::driver {
+
+using io::Schema;
+
+Schema simulation_schema(const char* step_doc) {
+  return Schema::map({
+      {"t_max_s", Schema::number().unit("s").greater_than(0.0).default_value(600.0).doc("simulated time")},
+      {"dt_s", Schema::number().unit("s").greater_than(0.0).default_value(0.05).doc(step_doc)},
+  });
+}
+
+Schema output_schema() {
+  return Schema::map({
+      {"format", Schema::choice({"h5", "out", "both"}).default_value("h5").doc("HDF5, OpenFAST text .out, or both")},
+      {"decimation", Schema::integer().at_least(1).default_value(1).doc("write every k-th step")},
+      {"channels", Schema::sequence(Schema::string()).optional().doc("channel names; absent = all")},
+  });
+}
+
+RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& deck, FixedStepScene scene,
+                          const ProgressCallback& progress) {
+  const double t_max = request.t_max_s.value_or(deck.number("simulation.t_max_s"));
+  const double dt = deck.number("simulation.dt_s");
+  const std::string format = request.output_format.value_or(deck.has("output") ? deck.string("output.format") : "h5");
+  const long decimation = deck.has("output") ? deck.integer("output.decimation") : 1;
+  OutputSet outputs(request.output_base.value_or(std::filesystem::path("runs") / request.deck_path.stem()), format);
+  scene.metadata.version = kVersion;
+  scene.metadata.deck_path = request.deck_path.string();
+  scene.metadata.deck_hash = deck.hash();
+  scene.metadata.dt_s = dt;
+  scene.metadata.dt_coupling_s = dt;
+  outputs.begin(scene.written, scene.metadata);
+
+  RunReport report;
+  report.outputs = outputs.paths();
+  std::vector<double> row(scene.written.size());
+  auto write_row = [&](double t) {
+    scene.row(t, row);
+    outputs.append(t, row);
+  };
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  const long steps = std::lround(t_max / dt);
+  double t = 0.0;
+  try {
+    write_row(t);
+    for (long k = 1; k <= steps; ++k) {
+      scene.step(t, dt);
+      t = static_cast<double>(k) * dt;
+      if (k % decimation == 0) write_row(t);
+      if (progress) progress(t, t_max);
+    }
+  } catch (const NumericalError& e) {
+    outputs.finish({elapsed(), std::string("failed: ") + e.what(), t});
+    throw;
+  }
+  report.wall_s = elapsed();
+  report.simulated_s = t;
+  report.large_steps = steps;
+  outputs.finish({report.wall_s, "completed", t});
+  return report;
+}
+
+}  // namespace fowtsim::driver

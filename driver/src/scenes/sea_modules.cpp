@@ -1,0 +1,90 @@
+#include "scenes/sea_modules.hpp"
+
+#include <algorithm>
+
+#include "decks/hydro_deck.hpp"
+#include "decks/mooring_deck.hpp"
+#include "decks/waves_deck.hpp"
+
+namespace fowtsim::driver {
+
+SeaModules::SeaModules(const io::ValidatedDeck& deck, const FrameMotion& initial_pose)
+    : wave_params_(deck.has("waves") ? wave_params(deck.section("waves")) : waves::WaveParams{}),
+      has_waves_(deck.has("waves")),
+      sea_(waves::Waves::make_params(wave_params_)) {
+  if (deck.has("hydro")) hydro_ = hydro_params(deck.section("hydro"));
+  if (deck.has("mooring")) mooring_ = mooring_params(deck.section("mooring"));
+  if (hydro_) {
+    hydro_in_ = hydro::make_input(*hydro_);
+    waterline_.resize(3, static_cast<Eigen::Index>(hydro_->members.size()));
+    if (!sea_.field->calm()) {
+      hydro::Points points(3, hydro::node_count(*hydro_));
+      hydro::strip_points(*hydro_, initial_pose, VecX::Zero(static_cast<Eigen::Index>(hydro_->members.size())), points);
+      std::vector<Vec3> list;
+      for (Eigen::Index i = 0; i < points.cols(); ++i) list.emplace_back(points.col(i));
+      kinematics_ = std::make_unique<waves::PrecomputedKinematics>(*sea_.field, list);
+    }
+  }
+  if (mooring_) mooring_state_ = mooring::QuasiStaticMooring::make_state(*mooring_);
+  channel_count_ = channels().size();
+}
+
+void SeaModules::evaluate(double t, const FrameMotion& pose) {
+  if (hydro_) {
+    hydro_in_.platform = pose;
+    hydro_in_.time_s = t;
+    if (hydro_->surface == hydro::SurfaceModel::wave_elevation) {
+      hydro::waterline_points(*hydro_, pose, waterline_);
+      for (Eigen::Index m = 0; m < waterline_.cols(); ++m)
+        hydro_in_.surface_elevation_m[m] = sea_.field->calm() ? 0.0 : sea_.field->elevation(waterline_(0, m), waterline_(1, m), t);
+    }
+    if (kinematics_) {
+      for (std::size_t i = 0; i < kinematics_->size(); ++i) {
+        const waves::WaveKinematics k = kinematics_->at(i, t);
+        const auto c = static_cast<Eigen::Index>(i);
+        hydro_in_.fluid_velocity_m_s.col(c) = k.velocity_m_s;
+        hydro_in_.fluid_acceleration_m_s2.col(c) = k.acceleration_m_s2;
+        hydro_in_.dynamic_pressure_Pa[c] = k.dynamic_pressure_Pa;
+      }
+    }
+    hydro_out_ = hydro::Hydro::outputs(*hydro_, hydro_in_, {});
+  }
+  if (mooring_) mooring_out_ = mooring::QuasiStaticMooring::evaluate(*mooring_, {pose, t}, mooring_state_);
+}
+
+Vec6 SeaModules::platform_load() const {
+  Vec6 load = hydro_ ? hydro_out_.total : Vec6::Zero();
+  if (mooring_) {
+    load.head<3>() += mooring_out_.force_N;
+    load.tail<3>() += mooring_out_.moment_N_m;
+  }
+  return load;
+}
+
+std::vector<ChannelInfo> SeaModules::channels() const {
+  std::vector<ChannelInfo> all = waves::Waves::channels(sea_);
+  if (hydro_)
+    for (const ChannelInfo& c : hydro::Hydro::channels(*hydro_)) all.push_back(c);
+  if (mooring_)
+    for (const ChannelInfo& c : mooring::QuasiStaticMooring::channels(*mooring_)) all.push_back(c);
+  return all;
+}
+
+void SeaModules::channel_values(double t, std::span<double> out) const {
+  const waves::Waves::Output wo = waves::Waves::outputs(sea_, {}, waves::Waves::State{t});
+  std::size_t k = 0;
+  for (; k < wo.probe_count; ++k) out[k] = wo.elevation_m[k];
+  if (hydro_) {
+    const auto v = hydro::channel_values(hydro_out_);
+    std::copy(v.begin(), v.end(), out.begin() + static_cast<long>(k));
+    k += v.size();
+  }
+  if (mooring_) mooring::QuasiStaticMooring::channel_values(*mooring_, mooring_out_, out.subspan(k));
+}
+
+std::vector<std::uint64_t> SeaModules::seeds() const {
+  if (has_waves_) return {wave_params_.seed};
+  return {};
+}
+
+}  // namespace fowtsim::driver

@@ -1,0 +1,55 @@
+#pragma once
+// The sea acting on a platform, as the scenes use it: waves (optional), hydro (optional) and
+// mooring (optional), read from their deck sections, evaluated together at a platform pose and
+// time. Wave kinematics are precomputed once at the hydro strip nodes of the initial pose
+// (HydroDyn's default: kinematics at the undisplaced nodes), so an evaluation does no FFT and no
+// allocation.
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "fowtsim/core/channels.hpp"
+#include "fowtsim/core/interface.hpp"
+#include "fowtsim/hydro/hydro.hpp"
+#include "fowtsim/io/schema.hpp"
+#include "fowtsim/mooring/quasi_static_mooring.hpp"
+#include "fowtsim/waves/waves_module.hpp"
+
+namespace fowtsim::driver {
+
+class SeaModules {
+ public:
+  // Reads the deck's `waves`, `hydro` and `mooring` sections (each optional).
+  SeaModules(const io::ValidatedDeck& deck, const FrameMotion& initial_pose);
+
+  // Hydro and mooring at `pose` and time t; the results stay until the next call.
+  void evaluate(double t, const FrameMotion& pose);
+  // Total load on the platform about its reference point, inertial frame [N; N·m].
+  Vec6 platform_load() const;
+  // Hydro added mass about the reference point, inertial frame (zero without hydro).
+  const Mat6& added_mass() const { return hydro_out_.added_mass; }
+
+  // Wave-probe, hydro and mooring channels, in the order channel_values() fills them.
+  std::vector<ChannelInfo> channels() const;
+  void channel_values(double t, std::span<double> out) const;
+  std::size_t channel_count() const { return channel_count_; }
+  // Random seeds in use (the wave seed, when there is a sea).
+  std::vector<std::uint64_t> seeds() const;
+
+ private:
+  waves::WaveParams wave_params_;
+  bool has_waves_ = false;
+  waves::Waves::Params sea_;
+  std::optional<hydro::Params> hydro_;
+  std::optional<mooring::MooringParams> mooring_;
+  std::unique_ptr<waves::PrecomputedKinematics> kinematics_;
+  hydro::Hydro::Input hydro_in_;
+  hydro::Hydro::Output hydro_out_;
+  hydro::Points waterline_;
+  mooring::QuasiStaticMooring::State mooring_state_{};
+  mooring::QuasiStaticMooring::Output mooring_out_{};
+  std::size_t channel_count_ = 0;
+};
+
+}  // namespace fowtsim::driver

@@ -1,0 +1,102 @@
+#pragma once
+// Rotor aerodynamics by steady blade-element momentum theory (bem.hpp) at the blade nodes, with
+// tower influence on the inflow (tower_influence.hpp), the Glauert/Pitt–Peters skewed-wake
+// redistribution and rotor-level loads and coefficients with OpenFAST AeroDyn channel names.
+//
+// Frames: g inertial (OpenFAST: X downwind at 0° wind direction, Z up); h hub frame handed in by
+// the driver (x_h along the shaft, downwind; rotating with the rotor as OpenFAST's hub frame or
+// not — the RtAeroF/M·h channels are resolved in whatever h is given); a airfoil frame of a node
+// (below); b node blade frame = a rotated back by θ = twist + pitch about z_a (T_gb = T_ga R_z(θ)).
+//
+// Airfoil frame a of a node (the node is the aerodynamic centre, the quarter chord):
+//   y_a along the chord from the leading to the trailing edge, z_a along the span toward the tip,
+//   x_a = y_a × z_a normal to the chord (toward the pressure side in normal operation, downwind).
+//   With zero twist and pitch it is the coned blade frame b (OpenFAST blade coordinates).
+//
+// Quasi-steady: State is empty. Dynamic inflow (per-node filtered induction, Øye) and unsteady
+// airfoil aerodynamics (per-node Beddoes–Leishman states) will live in State and be integrated by
+// advance(); evaluate() reads them. The per-node results in Output are what those models filter.
+#include <span>
+#include <vector>
+
+#include "fowtsim/aero/bem.hpp"
+#include "fowtsim/aero/params.hpp"
+#include "fowtsim/core/channels.hpp"
+#include "fowtsim/core/types.hpp"
+
+namespace fowtsim::aero {
+
+using Points = Eigen::Matrix<double, 3, Eigen::Dynamic>;  // 3 × n vectors, inertial frame g
+
+struct NodeResult {
+  SectionSolution section;         // φ, α, a, a', F, W, C_l, C_d, C_m, c_n, c_t, status (after skew)
+  double local_radius_m = 0.0;     // distance from the shaft axis [m]
+  double axial_velocity_m_s = 0.0;      // V_x along x_b (relative wind incl. tower influence) [m/s]
+  double tangential_velocity_m_s = 0.0; // V_y along y_b [m/s]
+  double normal_force_N_m = 0.0;   // along x_b, q c c_n (AeroDyn B·N·Fx) [N/m]
+  double tangential_force_N_m = 0.0;  // along −y_b (direction of rotation), q c c_t (B·N·Fy) [N/m]
+};
+
+struct RotorResult {
+  Vec3 force_hub_N = Vec3::Zero();      // aerodynamic force on the rotor in h (RtAeroF·h) [N]
+  Vec3 moment_hub_N_m = Vec3::Zero();   // moment about the hub centre in h (RtAeroM·h) [N·m]
+  double power_W = 0.0;                 // Ω · M_xh (RtAeroPwr) [W]
+  double mean_axial_inflow_m_s = 0.0;   // disk mean of the relative inflow along x_h (RtVAvgxh) [m/s]
+  double skew_rad = 0.0;                // angle between the disk-mean inflow and x_h (RtSkew) [rad]
+  double radius_m = 0.0;                // largest node distance from the shaft axis [m]
+  double area_m2 = 0.0;                 // π radius² (RtArea) [m²]
+  double tip_speed_ratio = 0.0;         // Ω R / U (RtTSR) [-]; 0 when |U| < 1e-6 m/s
+  double cp = 0.0;                      // P / (½ρ A U³) (RtAeroCp) [-]; same guard
+  double ct = 0.0;                      // F_xh / (½ρ A U²) (RtAeroCt) [-]
+  double cq = 0.0;                      // M_xh / (½ρ A U² R) (RtAeroCq) [-]
+};
+
+struct Aero {
+  using Params = aero::Params;
+
+  struct State {};  // quasi-steady BEM and airfoils: nothing to integrate yet (see header note)
+
+  struct Input {
+    Vec3 hub_position_m = Vec3::Zero();    // rotor apex (hub centre) in g [m]
+    Mat3 hub_orientation = Mat3::Identity();  // T_gh: columns x_h (shaft, downwind), y_h, z_h [-]
+    double rotor_speed_rad_s = 0.0;        // Ω about x_h (OpenFAST sign: + clockwise seen from upwind)
+    VecX blade_pitch_rad;                  // (B) pitch of each blade, + toward feather [rad]
+    Points node_position_m;                // (3 × B·N) aerodynamic centres in g [m]
+    std::vector<Mat3> node_orientation;    // (B·N) T_ga of each node's airfoil frame [-]
+    Points node_velocity_m_s;              // (3 × B·N) structural velocity of the nodes in g [m/s]
+    Points inflow_velocity_m_s;            // (3 × B·N) undisturbed wind at the nodes in g [m/s]
+    Vec3 tower_base_position_m = Vec3::Zero();  // tower axis point at elevation 0 in g [m]
+    Vec3 tower_axis = Vec3::UnitZ();       // unit vector up the tower axis in g [-]
+    double time_s = 0.0;                   // simulation time [s], only for error messages
+  };
+
+  struct Output {
+    Points force_N_m;                // (3 × B·N) aerodynamic force per unit span at the node, g [N/m]
+    Points moment_N_m_m;             // (3 × B·N) pitching moment per unit span about the node, g [N·m/m]
+    Points disturbed_inflow_m_s;     // (3 × B·N) inflow with tower influence, g [m/s]
+    std::vector<NodeResult> nodes;   // (B·N) section results
+    RotorResult rotor;
+    int unconverged_nodes = 0;       // nodes with InductionStatus::no_root (zero induction used)
+  };
+
+  static State make_state(const Params&) { return {}; }
+  static void advance(const Params&, const Input&, double, double, State&) {}
+  // Allocates the Output; the time loop should call evaluate() on a reused one.
+  static Output outputs(const Params& params, const Input& input, const State& state);
+  static std::vector<ChannelInfo> channels(const Params& params);
+};
+
+// Input and Output sized for params, at rest (identity orientations, zero velocities).
+Aero::Input make_input(const Params& params);
+Aero::Output make_output(const Params& params);
+
+// The loads and rotor quantities for the input, into an Output from make_output(). Allocates
+// nothing. Throws InputError on a mis-sized input and NumericalError on non-finite data.
+void evaluate(const Params& params, const Aero::Input& input, const Aero::State& state,
+              Aero::Output& output);
+
+// Values of channels(params) in the same order; values.size() must equal channels(params).size().
+void channel_values(const Params& params, const Aero::Input& input, const Aero::Output& output,
+                    std::span<double> values);
+
+}  // namespace fowtsim::aero

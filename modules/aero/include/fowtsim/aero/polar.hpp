@@ -1,0 +1,50 @@
+#pragma once
+// Static airfoil polar: lift, drag and pitching-moment coefficients against angle of attack over
+// the full circle [−180°, 180°], looked up linearly or by a natural cubic spline through the
+// table points (AeroDyn's InterpOrd 1 or 3; its default is 3). One table per airfoil, no Reynolds
+// dependence (AeroDyn AFTabMod 1).
+#include <string>
+#include <vector>
+
+namespace fowtsim::aero {
+
+enum class PolarInterpolation {
+  linear,        // piecewise linear between table points
+  cubic_spline,  // natural cubic spline (zero second derivative at ±180°) through the points
+};
+
+struct AirfoilCoefficients {
+  double cl = 0.0;  // lift coefficient [-]
+  double cd = 0.0;  // drag coefficient [-]
+  double cm = 0.0;  // pitching-moment coefficient about the quarter chord, + nose up [-]
+};
+
+class Polar {
+ public:
+  // Validates and precomputes the spline. alpha_deg strictly increasing, from −180 to 180
+  // (within 1e-6°), at least 2 points; cd ≥ 0 everywhere (a negative drag would break the
+  // bracketing argument of the induction solver). Throws InputError naming aero.airfoils[name].
+  Polar(std::string name, const std::vector<double>& alpha_deg, std::vector<double> cl,
+        std::vector<double> cd, std::vector<double> cm, PolarInterpolation interpolation);
+
+  // Coefficients at alpha [rad]; alpha is first wrapped into [−π, π). Allocates nothing.
+  AirfoilCoefficients evaluate(double alpha_rad) const;
+
+  const std::string& name() const { return name_; }
+  PolarInterpolation interpolation() const { return interpolation_; }
+  const std::vector<double>& alpha_rad() const { return alpha_; }  // table abscissae [rad]
+  const std::vector<double>& cl() const { return cl_; }
+  const std::vector<double>& cd() const { return cd_; }
+  const std::vector<double>& cm() const { return cm_; }
+
+ private:
+  std::string name_;
+  PolarInterpolation interpolation_;
+  std::vector<double> alpha_, cl_, cd_, cm_;    // table [rad], [-]
+  std::vector<double> cl2_, cd2_, cm2_;         // spline second derivatives [1/rad²]; empty if linear
+};
+
+// Wraps an angle into [−π, π).
+double wrap_angle(double angle_rad);
+
+}  // namespace fowtsim::aero

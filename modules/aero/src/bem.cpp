@@ -1,0 +1,293 @@
+#include "fowtsim/aero/bem.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "fowtsim/core/error.hpp"
+
+namespace fowtsim::aero {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kBracketOffset = 1e-6;  // ε of Ning's brackets (0+ε, π/2], [−π/4, −ε) [rad]
+constexpr int kScanIntervals = 72;       // per half circle when Ning's brackets fail
+
+double sign_of(double x) { return x < 0.0 ? -1.0 : 1.0; }
+
+// R(φ_c) of Ning 2014 in the reflected (first-quadrant) frame, with the induction it implies.
+class Residual {
+ public:
+  Residual(const SectionInflow& in, const Polar& polar, const Params& params)
+      : in_(in), polar_(polar), params_(params), sx_(sign_of(in.axial_velocity_m_s)),
+        sy_(sign_of(in.tangential_velocity_m_s)),
+        velocity_ratio_(std::abs(in.axial_velocity_m_s) / std::abs(in.tangential_velocity_m_s)),
+        solidity_(in.number_of_blades * in.chord_m / (2.0 * kPi * in.local_radius_m)) {}
+
+  struct Value {
+    double residual = 0.0;
+    double a = 0.0;      // axial induction implied by φ_c
+    double kappa_t = 0.0;  // κ'
+    double loss = 1.0;   // F
+  };
+
+  Value operator()(double phi_c) const {
+    ++evaluations;
+    const double s = std::sin(phi_c), c = std::cos(phi_c);
+    const double sin_phi = sx_ * s, cos_phi = sy_ * c;  // physical φ
+    const AirfoilCoefficients k = polar_.evaluate(std::atan2(sin_phi, cos_phi) - in_.theta_rad);
+    const double cn = k.cl * cos_phi + (params_.drag_in_axial_induction ? k.cd * sin_phi : 0.0);
+    const double ct = k.cl * sin_phi - (params_.drag_in_tangential_induction ? k.cd * cos_phi : 0.0);
+    Value v;
+    v.loss = prandtl_loss_factor(in_, std::abs(s), params_.tip_loss, params_.hub_loss);
+    const double kappa = solidity_ * sx_ * cn / (4.0 * v.loss * s * s);
+    // cos φ_c (1 − κ') written without the 1/cos φ_c of κ' so that φ_c = π/2 is regular.
+    double tangential = c;
+    if (params_.tangential_induction) {
+      const double q = solidity_ * sy_ * ct / (4.0 * v.loss * s);
+      tangential = c - q;
+      v.kappa_t = q / c;
+    }
+    double axial;
+    if (phi_c > 0.0) {
+      if (params_.high_induction_correction == HighInductionCorrection::buhl && kappa > 2.0 / 3.0) {
+        v.a = buhl_axial_induction(kappa, v.loss);
+        axial = s / (1.0 - v.a);
+      } else {
+        v.a = kappa / (1.0 + kappa);
+        axial = s * (1.0 + kappa);
+      }
+    } else {
+      v.a = kappa / (kappa - 1.0);
+      axial = s * (1.0 - kappa);
+    }
+    v.residual = axial - velocity_ratio_ * tangential;
+    return v;
+  }
+
+  mutable int evaluations = 0;
+
+ private:
+  const SectionInflow& in_;
+  const Polar& polar_;
+  const Params& params_;
+  double sx_, sy_, velocity_ratio_, solidity_;
+};
+
+// Brent's method (Brent 1973, "Algorithms for minimization without derivatives", ch. 4) on a
+// bracket [a, b] with f(a) f(b) ≤ 0: inverse quadratic interpolation or secant steps, bisection
+// whenever they would leave the bracket or converge slowly. Always converges.
+double brent_root(const Residual& f, double a, double b, double fa, double fb) {
+  constexpr double kTolerance = 1e-12;  // on φ [rad]
+  constexpr int kMaxIterations = 200;   // bisection alone halves π in 45 steps
+  double c = a, fc = fa, d = b - a, e = d;
+  for (int it = 0; it < kMaxIterations; ++it) {
+    if ((fb > 0.0) == (fc > 0.0)) {
+      c = a;
+      fc = fa;
+      d = e = b - a;
+    }
+    if (std::abs(fc) < std::abs(fb)) {
+      a = b;
+      b = c;
+      c = a;
+      fa = fb;
+      fb = fc;
+      fc = fa;
+    }
+    const double tol = 2.0 * std::numeric_limits<double>::epsilon() * std::abs(b) + 0.5 * kTolerance;
+    const double m = 0.5 * (c - b);
+    if (std::abs(m) <= tol || fb == 0.0) return b;
+    if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
+      double p, q;
+      const double s = fb / fa;
+      if (a == c) {
+        p = 2.0 * m * s;
+        q = 1.0 - s;
+      } else {
+        const double qa = fa / fc, r = fb / fc;
+        p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
+        q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
+      }
+      if (p > 0.0) q = -q;
+      p = std::abs(p);
+      if (2.0 * p < std::min(3.0 * m * q - std::abs(tol * q), std::abs(e * q))) {
+        e = d;
+        d = p / q;
+      } else {
+        d = m;
+        e = m;
+      }
+    } else {
+      d = m;
+      e = m;
+    }
+    a = b;
+    fa = fb;
+    b += std::abs(d) > tol ? d : (m > 0.0 ? tol : -tol);
+    fb = f(b).residual;
+  }
+  return b;
+}
+
+bool opposite(double fa, double fb) { return (fa <= 0.0 && fb >= 0.0) || (fa >= 0.0 && fb <= 0.0); }
+
+// Finds a root of R(φ_c): Ning's three brackets in order, then a scan of both half circles
+// (the poles at φ_c = 0, ±π are never inside a bracket). Returns false when there is none.
+bool find_root(const Residual& f, double& phi_c) {
+  const double pairs[3][2] = {{kBracketOffset, 0.5 * kPi},
+                              {-0.25 * kPi, -kBracketOffset},
+                              {0.5 * kPi, kPi - kBracketOffset}};
+  for (const auto& ab : pairs) {
+    const double fa = f(ab[0]).residual, fb = f(ab[1]).residual;
+    if (opposite(fa, fb)) {
+      phi_c = brent_root(f, ab[0], ab[1], fa, fb);
+      return true;
+    }
+  }
+  for (const double side : {1.0, -1.0}) {
+    const double h = (kPi - 2.0 * kBracketOffset) / kScanIntervals;
+    double a = side * kBracketOffset, fa = f(a).residual;
+    for (int i = 1; i <= kScanIntervals; ++i) {
+      const double b = side * (kBracketOffset + i * h), fb = f(b).residual;
+      if (opposite(fa, fb)) {
+        phi_c = side > 0.0 ? brent_root(f, a, b, fa, fb) : brent_root(f, b, a, fb, fa);
+        return true;
+      }
+      a = b;
+      fa = fb;
+    }
+  }
+  return false;
+}
+
+[[noreturn]] void non_finite(const SectionInflow& in, const char* what) {
+  throw NumericalError({"aero.bem", std::nullopt, what,
+                        "check the inflow and blade motion handed to the aero module"},
+                       fmt::format("non-finite {} at r = {} m (V_x = {} m/s, V_y = {} m/s)", what,
+                                   in.local_radius_m, in.axial_velocity_m_s, in.tangential_velocity_m_s));
+}
+
+}  // namespace
+
+double prandtl_loss_factor(const SectionInflow& in, double abs_sin_phi, bool tip_loss, bool hub_loss) {
+  double loss = 1.0;
+  const double b = in.number_of_blades;
+  if (tip_loss) {
+    const double gap = in.tip_radius_m - in.local_radius_m;
+    if (gap <= 0.0) return 0.0;
+    if (abs_sin_phi > 0.0) {
+      loss *= 2.0 / kPi * std::acos(std::exp(-0.5 * b * gap / (in.local_radius_m * abs_sin_phi)));
+    }
+  }
+  if (hub_loss) {
+    const double gap = in.local_radius_m - in.hub_radius_m;
+    if (gap <= 0.0) return 0.0;
+    if (abs_sin_phi > 0.0) {
+      loss *= 2.0 / kPi * std::acos(std::exp(-0.5 * b * gap / (in.hub_radius_m * abs_sin_phi)));
+    }
+  }
+  return loss;
+}
+
+double buhl_axial_induction(double kappa, double loss_factor) {
+  const double f = loss_factor;
+  const double g1 = 2.0 * f * kappa - (10.0 / 9.0 - f);
+  const double g2 = 2.0 * f * kappa - f * (4.0 / 3.0 - f);
+  const double g3 = 2.0 * f * kappa - (25.0 / 9.0 - 2.0 * f);
+  if (std::abs(g3) < 1e-6) return 1.0 - 1.0 / (2.0 * std::sqrt(g2));
+  return (g1 - std::sqrt(g2)) / g3;
+}
+
+SectionSolution section_with_induction(const SectionInflow& in, const Polar& polar,
+                                       double axial_induction, double tangential_induction,
+                                       const SectionSolution& base) {
+  SectionSolution s = base;
+  s.axial_induction = axial_induction;
+  s.tangential_induction = tangential_induction;
+  const double u = in.axial_velocity_m_s * (1.0 - axial_induction);
+  const double v = in.tangential_velocity_m_s * (1.0 + tangential_induction);
+  s.phi_rad = std::atan2(u, v);
+  s.alpha_rad = wrap_angle(s.phi_rad - in.theta_rad);
+  s.relative_speed_m_s = std::hypot(u, v);
+  s.coefficients = polar.evaluate(s.alpha_rad);
+  const double sp = std::sin(s.phi_rad), cp = std::cos(s.phi_rad);
+  s.cn = s.coefficients.cl * cp + s.coefficients.cd * sp;
+  s.ct = s.coefficients.cl * sp - s.coefficients.cd * cp;
+  if (!std::isfinite(s.phi_rad) || !std::isfinite(s.relative_speed_m_s) || !std::isfinite(s.cn) ||
+      !std::isfinite(s.ct) || !std::isfinite(s.coefficients.cm)) {
+    non_finite(in, "section state");
+  }
+  return s;
+}
+
+SectionSolution solve_section(const SectionInflow& in, const Polar& polar, const Params& params) {
+  const double vx = in.axial_velocity_m_s, vy = in.tangential_velocity_m_s;
+  if (!std::isfinite(vx) || !std::isfinite(vy) || !std::isfinite(in.theta_rad) ||
+      !std::isfinite(in.local_radius_m)) {
+    non_finite(in, "section inflow");
+  }
+  SectionSolution base;
+  const double speed = std::hypot(vx, vy);
+  const bool at_tip = params.tip_loss && in.local_radius_m >= in.tip_radius_m;
+  const bool at_hub = params.hub_loss && in.local_radius_m <= in.hub_radius_m;
+  if (at_tip || at_hub) {
+    base.status = InductionStatus::zero_loss_factor;
+    base.loss_factor = 0.0;
+    return section_with_induction(in, polar, 1.0, 0.0, base);
+  }
+  if (speed < 1e-8) {
+    base.status = InductionStatus::still_air;
+    return section_with_induction(in, polar, 0.0, 0.0, base);
+  }
+  if (std::abs(vx) <= 1e-9 * speed) {
+    base.status = InductionStatus::no_axial_flow;
+    return section_with_induction(in, polar, 0.0, 0.0, base);
+  }
+  if (std::abs(vy) <= 1e-9 * speed) {
+    // φ = ±π/2 whatever a is: the axial balance alone fixes a (evaluated at φ_c = π/2 with a
+    // unit tangential velocity standing in for V_y, which the residual then ignores).
+    SectionInflow axial = in;
+    axial.tangential_velocity_m_s = 1.0;
+    const Residual f(axial, polar, params);
+    const Residual::Value v = f(0.5 * kPi);
+    base.status = InductionStatus::no_tangential_flow;
+    base.loss_factor = v.loss;
+    base.residual_evaluations = f.evaluations;
+    return section_with_induction(in, polar, v.a, 0.0, base);
+  }
+  const Residual f(in, polar, params);
+  double phi_c = 0.0;
+  if (!find_root(f, phi_c)) {
+    base.status = InductionStatus::no_root;
+    base.residual_evaluations = f.evaluations;
+    return section_with_induction(in, polar, 0.0, 0.0, base);
+  }
+  const Residual::Value v = f(phi_c);
+  base.loss_factor = v.loss;
+  base.residual_evaluations = f.evaluations;
+  // a and a' consistent with tan φ = V_x(1−a)/(V_y(1+a')) at the root: take the better-conditioned
+  // of the two momentum relations and close the triangle with the other.
+  const double phi = std::atan2(sign_of(vx) * std::sin(phi_c), sign_of(vy) * std::cos(phi_c));
+  const double sp = std::sin(phi), cp = std::cos(phi);
+  double a = v.a, ap = 0.0;
+  if (std::abs(sp) >= std::abs(cp) || !params.tangential_induction) {
+    if (params.tangential_induction) {
+      const double w = vx * (1.0 - a) / sp;
+      ap = w * cp / vy - 1.0;
+    }
+  } else {
+    ap = v.kappa_t / (1.0 - v.kappa_t);
+    const double w = vy * (1.0 + ap) / cp;
+    a = 1.0 - w * sp / vx;
+  }
+  if (!std::isfinite(a) || !std::isfinite(ap)) {
+    base.status = InductionStatus::no_root;
+    return section_with_induction(in, polar, 0.0, 0.0, base);
+  }
+  return section_with_induction(in, polar, a, ap, base);
+}
+
+}  // namespace fowtsim::aero

@@ -1,0 +1,110 @@
+#include "fowtsim/aero/polar.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <span>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/core/interpolation.hpp"
+
+namespace fowtsim::aero {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+[[noreturn]] void bad_table(const std::string& name, const std::string& what) {
+  throw InputError({"aero", std::nullopt, fmt::format("aero.airfoils[{}].polar", name),
+                    "transcribe the full ±180° table from the airfoil file"},
+                   fmt::format("airfoil '{}': {}", name, what));
+}
+
+// Second derivatives of the natural cubic spline through (x, y): the tridiagonal system of
+// continuous first derivatives with y'' = 0 at both ends (Press et al., Numerical Recipes §3.3),
+// solved by the Thomas algorithm.
+std::vector<double> natural_spline_second_derivatives(const std::vector<double>& x,
+                                                      const std::vector<double>& y) {
+  const std::size_t n = x.size();
+  std::vector<double> m(n, 0.0);
+  if (n < 3) return m;
+  std::vector<double> diag(n, 1.0), upper(n, 0.0), rhs(n, 0.0);
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double h0 = x[i] - x[i - 1], h1 = x[i + 1] - x[i];
+    const double lower = h0 / 6.0;
+    diag[i] = (h0 + h1) / 3.0;
+    upper[i] = h1 / 6.0;
+    rhs[i] = (y[i + 1] - y[i]) / h1 - (y[i] - y[i - 1]) / h0;
+    // Forward elimination with row i−1 (row 0 is the identity row m0 = 0).
+    const double w = lower / diag[i - 1];
+    diag[i] -= w * upper[i - 1];
+    rhs[i] -= w * rhs[i - 1];
+  }
+  for (std::size_t i = n - 2; i >= 1; --i) {
+    m[i] = (rhs[i] - upper[i] * m[i + 1]) / diag[i];
+  }
+  return m;
+}
+
+double spline_value(const std::vector<double>& x, const std::vector<double>& y,
+                    const std::vector<double>& m, std::size_t i, double xq) {
+  const double h = x[i + 1] - x[i];
+  const double a = (x[i + 1] - xq) / h, b = (xq - x[i]) / h;
+  return a * y[i] + b * y[i + 1] + ((a * a * a - a) * m[i] + (b * b * b - b) * m[i + 1]) * h * h / 6.0;
+}
+
+}  // namespace
+
+double wrap_angle(double angle_rad) {
+  constexpr double two_pi = 2.0 * std::numbers::pi;
+  double a = std::fmod(angle_rad + std::numbers::pi, two_pi);
+  if (a < 0.0) a += two_pi;
+  return a - std::numbers::pi;
+}
+
+Polar::Polar(std::string name, const std::vector<double>& alpha_deg, std::vector<double> cl,
+             std::vector<double> cd, std::vector<double> cm, PolarInterpolation interpolation)
+    : name_(std::move(name)), interpolation_(interpolation), cl_(std::move(cl)), cd_(std::move(cd)),
+      cm_(std::move(cm)) {
+  const std::size_t n = alpha_deg.size();
+  if (n < 2) bad_table(name_, fmt::format("{} rows (expected at least 2)", n));
+  if (cl_.size() != n || cd_.size() != n || cm_.size() != n) {
+    bad_table(name_, fmt::format("column sizes differ (alpha {}, cl {}, cd {}, cm {})", n, cl_.size(),
+                                 cd_.size(), cm_.size()));
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(alpha_deg[i]) || !std::isfinite(cl_[i]) || !std::isfinite(cd_[i]) ||
+        !std::isfinite(cm_[i])) {
+      bad_table(name_, fmt::format("row {} has a non-finite entry", i + 1));
+    }
+    if (cd_[i] < 0.0) bad_table(name_, fmt::format("row {}: cd = {} (expected >= 0)", i + 1, cd_[i]));
+    if (i > 0 && !(alpha_deg[i] > alpha_deg[i - 1])) {
+      bad_table(name_, fmt::format("alpha_deg not strictly increasing at row {}", i + 1));
+    }
+  }
+  if (std::abs(alpha_deg.front() + 180.0) > 1e-6 || std::abs(alpha_deg.back() - 180.0) > 1e-6) {
+    bad_table(name_, fmt::format("alpha_deg spans [{}, {}] (expected exactly [-180, 180])",
+                                 alpha_deg.front(), alpha_deg.back()));
+  }
+  alpha_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) alpha_[i] = alpha_deg[i] * kDegree;
+  if (interpolation_ == PolarInterpolation::cubic_spline) {
+    cl2_ = natural_spline_second_derivatives(alpha_, cl_);
+    cd2_ = natural_spline_second_derivatives(alpha_, cd_);
+    cm2_ = natural_spline_second_derivatives(alpha_, cm_);
+  }
+}
+
+AirfoilCoefficients Polar::evaluate(double alpha_rad) const {
+  const double a = wrap_angle(alpha_rad);
+  const std::size_t i = bracket_index(std::span<const double>(alpha_), a);
+  if (interpolation_ == PolarInterpolation::cubic_spline) {
+    return {spline_value(alpha_, cl_, cl2_, i, a), spline_value(alpha_, cd_, cd2_, i, a),
+            spline_value(alpha_, cm_, cm2_, i, a)};
+  }
+  const double s = (a - alpha_[i]) / (alpha_[i + 1] - alpha_[i]);
+  return {lerp(cl_[i], cl_[i + 1], s), lerp(cd_[i], cd_[i + 1], s), lerp(cm_[i], cm_[i + 1], s)};
+}
+
+}  // namespace fowtsim::aero

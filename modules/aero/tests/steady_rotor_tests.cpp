@@ -1,0 +1,215 @@
+// Rigid NREL 5MW rotor in steady uniform wind against OpenFAST v5.0.0 AeroDyn (BEMT) at seven
+// operating points (../shared/reference/openfast-runs/aero_steady), and the peak power
+// coefficient of the NREL 5MW definition report.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "fowtsim/aero/aero.hpp"
+#include "fowtsim/aero/rigid_rotor.hpp"
+#include "fowtsim/testing/skip.hpp"
+#include "nrel5mw_deck.hpp"
+
+using namespace fowtsim;
+using namespace fowtsim::aero;
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+// Turbine geometry of the aero_steady decks (NRELOffshrBsline5MW_OC3Hywind_ElastoDyn.dat):
+// PreCone −2.5° (tips upwind), ShftTilt −5° (nose up), HubRad 1.5 m, OverHang −5.0191 m,
+// TowerHt 87.6 m, Twr2Shft 1.96256 m → apex 5.0 m upwind of the tower axis at 90.0 m.
+RigidRotor nrel5mw_rotor() {
+  const double tilt = 5.0 * kDegree, overhang = 5.0191;
+  return {Vec3(-overhang * std::cos(tilt), 0.0, 87.6 + 1.96256 + overhang * std::sin(tilt)), 0.0, tilt,
+          2.5 * kDegree, 1.5};
+}
+
+// An OpenFAST text output: header line starting with "Time", a units line, tab-separated rows.
+struct OutFile {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> rows;
+  int column(const std::string& name) const {
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (names[i] == name) return static_cast<int>(i);
+    }
+    FAIL("channel " << name << " not in the .out file");
+    return -1;
+  }
+};
+
+OutFile read_out(const std::string& path) {
+  std::ifstream file(path);
+  REQUIRE(file.good());
+  OutFile out;
+  std::string line;
+  while (std::getline(file, line) && line.rfind("Time", 0) != 0) {}
+  std::istringstream header(line);
+  for (std::string name; std::getline(header, name, '\t');) out.names.push_back(name);
+  std::getline(file, line);  // units
+  while (std::getline(file, line)) {
+    std::istringstream row(line);
+    std::vector<double> values;
+    for (std::string cell; std::getline(row, cell, '\t');) {
+      values.push_back(cell == "INVALID" ? 0.0 : std::stod(cell));
+    }
+    if (values.size() == out.names.size()) out.rows.push_back(values);
+  }
+  return out;
+}
+
+struct SummaryRow {
+  double wind, rpm, pitch, tsr, cp, ct, power_kW, thrust_kN, torque_kNm;
+};
+
+std::vector<SummaryRow> read_summary(const std::string& path) {
+  std::ifstream file(path);
+  REQUIRE(file.good());
+  std::string line;
+  std::getline(file, line);  // header
+  std::vector<SummaryRow> rows;
+  while (std::getline(file, line)) {
+    SummaryRow r;
+    if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &r.wind, &r.rpm, &r.pitch, &r.tsr,
+                    &r.cp, &r.ct, &r.power_kW, &r.thrust_kN, &r.torque_kNm) == 9) {
+      rows.push_back(r);
+    }
+  }
+  return rows;
+}
+
+double relative_error(double value, double reference) { return std::abs(value / reference - 1.0); }
+
+}  // namespace
+
+// Intent: the whole BEM chain (geometry with precone and tilt, skewed inflow, Ning solver, losses,
+// Buhl, Pitt–Peters redistribution, spline polars, exact load integration) reproduces AeroDyn's
+// rotor loads and section states. Evaluated at the azimuths of OpenFAST's output rows 15–20 s and
+// averaged the same way as summary.csv.
+TEST_CASE("rigid NREL 5MW rotor matches OpenFAST AeroDyn at seven steady operating points",
+          "[verification][aero]") {
+  const auto ref = fowtsim::testing::shared_dir_or_skip() / "reference" / "openfast-runs" / "aero_steady";
+  const Params params = aero::testing::load_nrel5mw_deck();
+  const RigidRotor rotor = nrel5mw_rotor();
+  Aero::Input in = make_input(params);
+  Aero::Output out = make_output(params);
+  const std::vector<SummaryRow> cases = read_summary((ref / "summary.csv").string());
+  REQUIRE(cases.size() == 7);
+  double worst_load = 0.0, worst_alpha = 0.0, worst_induction = 0.0;  // reported below
+  std::printf("\n U   | P kW (ref)          | Fxh kN (ref)      | Mxh kNm (ref)       | Cp (ref)        | Ct (ref)        "
+              "| N2 alpha deg (ref)   | N2 a (ref)\n");
+  for (const SummaryRow& c : cases) {
+    char dir[8];
+    std::snprintf(dir, sizeof dir, "U%02d", static_cast<int>(c.wind));
+    const OutFile of = read_out((ref / dir / (std::string("aero_steady_") + dir + ".out")).string());
+    const int c_time = of.column("Time"), c_az = of.column("Azimuth");
+    double power = 0, thrust = 0, torque = 0, cp = 0, ct = 0;
+    std::vector<double> alpha(params.output_nodes.size(), 0.0), axind(alpha.size(), 0.0);
+    std::vector<double> ref_alpha(alpha.size(), 0.0), ref_axind(alpha.size(), 0.0);
+    int samples = 0;
+    in.inflow_velocity_m_s.colwise() = Vec3(c.wind, 0.0, 0.0);
+    for (const std::vector<double>& row : of.rows) {
+      if (row[c_time] < 15.0 - 1e-9) continue;
+      place_rigid_rotor(params, rotor, row[c_az] * kDegree, c.rpm * std::numbers::pi / 30.0, c.pitch * kDegree, in);
+      evaluate(params, in, Aero::State{}, out);
+      REQUIRE(out.unconverged_nodes == 0);
+      power += out.rotor.power_W;
+      thrust += out.rotor.force_hub_N.x();
+      torque += out.rotor.moment_hub_N_m.x();
+      cp += out.rotor.cp;
+      ct += out.rotor.ct;
+      for (std::size_t j = 0; j < alpha.size(); ++j) {
+        const NodeResult& n = out.nodes[params.output_nodes[j] - 1];  // blade 1
+        alpha[j] += n.section.alpha_rad / kDegree;
+        axind[j] += n.section.axial_induction;
+        ref_alpha[j] += row[of.column("B1N" + std::to_string(j + 1) + "Alpha")];
+        ref_axind[j] += row[of.column("B1N" + std::to_string(j + 1) + "AxInd")];
+      }
+      ++samples;
+    }
+    REQUIRE(samples >= 50);
+    power /= samples, thrust /= samples, torque /= samples, cp /= samples, ct /= samples;
+    for (std::size_t j = 0; j < alpha.size(); ++j) {
+      alpha[j] /= samples, axind[j] /= samples, ref_alpha[j] /= samples, ref_axind[j] /= samples;
+    }
+    std::printf("%4.0f | %8.1f (%8.1f) | %7.2f (%7.2f) | %8.1f (%8.1f) | %.4f (%.4f) | %.4f (%.4f) | %7.3f (%7.3f) | %.4f (%.4f)\n",
+                c.wind, power / 1e3, c.power_kW, thrust / 1e3, c.thrust_kN, torque / 1e3, c.torque_kNm, cp, c.cp,
+                ct, c.ct, alpha[1], ref_alpha[1], axind[1], ref_axind[1]);
+    for (double e : {relative_error(power, c.power_kW * 1e3), relative_error(thrust, c.thrust_kN * 1e3),
+                     relative_error(torque, c.torque_kNm * 1e3), relative_error(cp, c.cp), relative_error(ct, c.ct)}) {
+      worst_load = std::max(worst_load, e);
+    }
+    for (std::size_t j = 0; j < alpha.size(); ++j) {
+      worst_alpha = std::max(worst_alpha, std::abs(alpha[j] - ref_alpha[j]));
+      worst_induction = std::max(worst_induction, std::abs(axind[j] - ref_axind[j]));
+    }
+    INFO("wind " << c.wind << " m/s");
+    // Tolerance 1 %: issue 4 acceptance bound for rotor loads against AeroDyn (same theory, same
+    // data; differences come from implementation details such as the skew-angle definition).
+    CHECK(relative_error(power, c.power_kW * 1e3) < 0.01);
+    CHECK(relative_error(thrust, c.thrust_kN * 1e3) < 0.01);
+    CHECK(relative_error(torque, c.torque_kNm * 1e3) < 0.01);
+    CHECK(relative_error(cp, c.cp) < 0.01);
+    CHECK(relative_error(ct, c.ct) < 0.01);
+    for (std::size_t j = 0; j < alpha.size(); ++j) {
+      INFO("output node " << params.output_nodes[j]);
+      // Tolerances 0.3° and 0.01: issue 4 acceptance bounds for section states against AeroDyn.
+      CHECK(std::abs(alpha[j] - ref_alpha[j]) < 0.3);
+      CHECK(std::abs(axind[j] - ref_axind[j]) < 0.01);
+    }
+  }
+  std::printf("worst over 7 cases: rotor loads/coefficients %.3f %%, alpha %.4f deg, axial induction %.5f "
+              "(output nodes 1, 9, 19)\n", 100.0 * worst_load, worst_alpha, worst_induction);
+}
+
+// Intent: the peak of the Cp–λ curve at 0° pitch. Reference: Jonkman et al. 2009 (NREL/TP-500-38060)
+// Ch. 7, via ../shared/reference/PUBLISHED.md: "peak power coefficient Cp = 0.482 at tip-speed ratio
+// 7.55 and 0° pitch". That is the rotor (aerodynamic, shaft) power coefficient of FAST/AeroDyn
+// steady runs, the quantity computed here (RtAeroCp); the electrical one would be 0.944 times it.
+// Same turbine geometry as above (precone, tilt), 8 m/s, λ = Ω R / RtVAvgxh, azimuth-averaged.
+TEST_CASE("NREL 5MW peak power coefficient at 0 deg pitch", "[verification][aero]") {
+  const Params params = aero::testing::load_nrel5mw_deck();
+  const RigidRotor rotor = nrel5mw_rotor();
+  Aero::Input in = make_input(params);
+  Aero::Output out = make_output(params);
+  in.inflow_velocity_m_s.colwise() = Vec3(8.0, 0.0, 0.0);
+  place_rigid_rotor(params, rotor, 0.0, 1.0, 0.0, in);
+  evaluate(params, in, Aero::State{}, out);
+  const double radius = out.rotor.radius_m, u = out.rotor.mean_axial_inflow_m_s;
+  std::vector<double> lambda, cp;
+  for (double l = 5.0; l <= 11.0 + 1e-9; l += 0.05) {
+    double mean = 0.0;
+    constexpr int kAzimuths = 12;  // over one 120° period of the three-bladed rotor
+    for (int k = 0; k < kAzimuths; ++k) {
+      place_rigid_rotor(params, rotor, 2.0 * std::numbers::pi / 3.0 * k / kAzimuths, l * u / radius, 0.0, in);
+      evaluate(params, in, Aero::State{}, out);
+      mean += out.rotor.cp / kAzimuths;
+    }
+    lambda.push_back(l);
+    cp.push_back(mean);
+  }
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < cp.size(); ++i) {
+    if (cp[i] > cp[best]) best = i;
+  }
+  REQUIRE(best > 0);
+  REQUIRE(best + 1 < cp.size());
+  // Vertex of the parabola through the best sample and its neighbours (equal spacing h).
+  const double h = lambda[1] - lambda[0];
+  const double c0 = cp[best - 1], c1 = cp[best], c2 = cp[best + 1];
+  const double shift = 0.5 * h * (c0 - c2) / (c0 - 2.0 * c1 + c2);
+  const double lambda_max = lambda[best] + shift;
+  const double cp_max = c1 - 0.25 * (c0 - c2) * shift / h;
+  std::printf("\nCp-lambda peak: Cp = %.4f at lambda = %.3f (38060: 0.482 at 7.55)\n", cp_max, lambda_max);
+  // Tolerance 2 %: issue 4 bound for the published peak (older AeroDyn, different BEM options).
+  CHECK(relative_error(cp_max, 0.482) < 0.02);
+  CHECK(relative_error(lambda_max, 7.55) < 0.02);
+}

@@ -1,0 +1,74 @@
+#pragma once
+// Parameters of the NREL 5-MW baseline controller (Jonkman et al., NREL/TP-500-38060, 2009, Ch. 7):
+// a single-pole low-pass filter on the generator speed, a variable-speed generator-torque schedule
+// (regions 1, 1½, 2, 2½, 3) with torque and torque-rate limits, and a gain-scheduled PI collective
+// blade-pitch controller with pitch-angle and pitch-rate limits. Each member maps one to one onto a
+// key of the deck section `controller:` (inputs/nrel5mw/controller_land.yaml). Speeds are on the
+// high-speed (generator) shaft, angles in radians, SI everywhere (DESIGN.md §3).
+//
+// This header and baseline_law.hpp depend on the standard library only, so the test DISCON shared
+// library (tests/discon/) can compile the very same law.
+#include <string_view>
+
+namespace fowtsim::control {
+
+// Generator torque above rated (38060 §7.3: constant power; TP-500-47266 §7 OC3-Hywind: constant
+// torque, to avoid the negative damping of the platform-pitch mode).
+enum class Region3Torque {
+  constant_power,   // T = P_rated / ω_f
+  constant_torque,  // T = P_rated / ω_ref (the rated torque)
+};
+
+// "constant_power" | "constant_torque" → Region3Torque; throws InputError naming the key otherwise.
+Region3Torque region3_torque_from_name(std::string_view name);
+const char* region3_torque_name(Region3Torque mode);
+
+struct BaselineParams {
+  // --- timing ------------------------------------------------------------------------------------
+  double sample_time_s = 0.0;  // controller sample time [s], ≥ 0; 0 = update at every call (DISCON DT)
+
+  // --- generator-speed filter (38060 §7.1) --------------------------------------------------------
+  double filter_corner_rad_s = 1.570796;  // corner frequency ω_c of the single-pole low-pass [rad/s] (0.25 Hz)
+
+  // --- variable-speed torque (38060 §7.2), generator (HSS) side ------------------------------------
+  double cut_in_speed_rad_s = 70.16224;          // VS_CtInSp: region 1 → 1½ [rad/s]
+  double region2_start_speed_rad_s = 91.21091;   // VS_Rgn2Sp: region 1½ → 2 [rad/s]
+  double region2_gain_N_m_s2 = 2.332287;         // VS_Rgn2K: k in T = k ω² [N·m/(rad/s)²]
+  double rated_generator_speed_rad_s = 121.6805; // VS_RtGnSp: top of region 2½ [rad/s]
+  double rated_power_W = 5296610.0;              // VS_RtPwr: rated mechanical power [W]
+  double slip_percent = 10.0;                    // VS_SlPc: slip of the 2½ induction-machine line [%]
+  double max_torque_N_m = 47402.91;              // VS_MaxTq: torque limit [N·m]
+  double max_torque_rate_N_m_s = 15000.0;        // VS_MaxRat: torque-rate limit [N·m/s]
+  double region3_min_pitch_rad = 0.01745329;     // VS_Rgn3MP: pitch beyond which region 3 holds [rad]
+  Region3Torque region3_torque = Region3Torque::constant_power;  // torque law above rated
+
+  // --- collective pitch (38060 §7.3) --------------------------------------------------------------
+  double reference_speed_rad_s = 122.9096;       // PC_RefSpd: regulated generator speed [rad/s]
+  double proportional_gain_s = 0.01882681;       // PC_KP at zero pitch [rad/(rad/s)] = [s]
+  double integral_gain = 0.008068634;            // PC_KI at zero pitch [rad/rad] = [-]
+  double gain_schedule_pitch_rad = 0.1099965;    // PC_KK: pitch at which the gains are halved [rad]
+  double min_pitch_rad = 0.0;                    // PC_MinPit [rad]
+  double max_pitch_rad = 1.570796;               // PC_MaxPit [rad]
+  double max_pitch_rate_rad_s = 0.1396263;       // PC_MaxRat: |dθ/dt| limit [rad/s] (8°/s)
+
+  // --- electrical -------------------------------------------------------------------------------
+  double generator_efficiency = 0.944;  // η: electrical / mechanical power [-] (38060 Table 1-1), for GenPwr
+};
+
+// Closed-form quantities of the torque schedule that follow from the parameters (38060 §7.2).
+struct TorqueCurve {
+  double synchronous_speed_rad_s = 0.0;   // ω_s = ω_rated,gen / (1 + slip/100): zero-torque point of the 2½ line
+  double slope_region15_N_m_s = 0.0;      // region 1½ line through (ω_cut-in, 0) and (ω_2, k ω_2²) [N·m/(rad/s)]
+  double slope_region25_N_m_s = 0.0;      // region 2½ line through (ω_s, 0) and (ω_rated,gen, P/ω_rated,gen)
+  double transition_speed_rad_s = 0.0;    // region 2 → 2½: lower root of k ω² = S₂½ (ω − ω_s) [rad/s]
+  double rated_torque_N_m = 0.0;          // P_rated / ω_ref: constant-torque region-3 value [N·m]
+};
+
+// The torque curve of p; NaN members when p has no region-2/2½ intersection (validate() rejects that).
+TorqueCurve torque_curve(const BaselineParams& p);
+
+// Collects every problem (key, value found, what was expected) and throws one InputError listing
+// them all (module "control"); returns normally when the parameters are usable.
+void validate(const BaselineParams& p);
+
+}  // namespace fowtsim::control

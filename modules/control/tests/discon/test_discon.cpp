@@ -1,0 +1,78 @@
+// A Bladed-style DISCON controller built from fowtsim's own baseline law (baseline_law.cpp and
+// presets.cpp are compiled into this shared library), for testing the external-controller
+// interface: driven through the swap array it must reproduce BaselineController's time series.
+//
+// accInfile names the parameter set: "nrel5mw_land" or "oc3_hywind" (presets.hpp); any other name
+// fails the first call with aviFAIL = −1 and a message, which the tests use to check the error path.
+// Like any DISCON it keeps its state in static variables between calls.
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "fowtsim/control/baseline_law.hpp"
+#include "fowtsim/control/presets.hpp"
+#include "fowtsim/control/swap_records.hpp"
+
+namespace {
+
+using namespace fowtsim::control;
+
+struct Controller {
+  BaselineParams params;
+  TorqueCurve curve;
+  BaselineState state;
+};
+std::optional<Controller> controller;  // the DISCON's state between calls
+
+float& at(float* swap_array, int record) { return swap_array[record - 1]; }
+
+void set_message(float* swap_array, char* message, const std::string& text) {
+  const int capacity = static_cast<int>(std::lround(at(swap_array, swap::message_capacity)));
+  if (capacity > 0) std::snprintf(message, static_cast<std::size_t>(capacity), "%s", text.c_str());
+}
+
+}  // namespace
+
+extern "C" __attribute__((visibility("default"))) void DISCON(float* avrSWAP, int* aviFAIL, const char* accInfile,
+                                                             char* /*avcOutname*/, char* avcMsg) {
+  const int status = static_cast<int>(std::lround(at(avrSWAP, swap::status)));
+  *aviFAIL = 0;
+  if (status == -1) {  // final call: nothing to close
+    controller.reset();
+    return;
+  }
+  if (status == 0) {
+    const std::optional<BaselineParams> params = baseline_preset(accInfile);
+    if (!params) {
+      set_message(avrSWAP, avcMsg, std::string("test DISCON: unknown parameter set '") + accInfile +
+                                       "' (expected nrel5mw_land or oc3_hywind)");
+      *aviFAIL = -1;
+      return;
+    }
+    controller = Controller{*params, torque_curve(*params), BaselineState{}};
+  }
+  if (!controller) {
+    set_message(avrSWAP, avcMsg, "test DISCON: called before its first call (status 0)");
+    *aviFAIL = -1;
+    return;
+  }
+  Measurements m;
+  m.generator_speed_rad_s = at(avrSWAP, swap::generator_speed);
+  m.blade_pitch_rad = {at(avrSWAP, swap::blade1_pitch), at(avrSWAP, swap::blade2_pitch),
+                       at(avrSWAP, swap::blade3_pitch)};
+  baseline_update(controller->params, controller->curve, m, at(avrSWAP, swap::time), controller->state);
+
+  const BaselineState& s = controller->state;
+  at(avrSWAP, swap::generator_torque_demand) = static_cast<float>(s.torque_demand_N_m);
+  for (int b = 0; b < kBladeCount; ++b) at(avrSWAP, swap::blade1_pitch_demand + b) = static_cast<float>(s.pitch_demand_rad[b]);
+  at(avrSWAP, swap::collective_pitch_demand) = static_cast<float>(s.pitch_demand_rad[0]);
+  at(avrSWAP, swap::pitch_rate_demand) = 0.0f;
+  at(avrSWAP, swap::generator_contactor) = 1.0f;
+  at(avrSWAP, swap::shaft_brake) = 0.0f;
+  at(avrSWAP, swap::yaw_actuator_torque) = 0.0f;
+  at(avrSWAP, swap::yaw_rate_demand) = 0.0f;
+  at(avrSWAP, swap::pitch_override) = 0.0f;
+  at(avrSWAP, swap::torque_override) = 0.0f;
+  at(avrSWAP, swap::logging_count) = 0.0f;
+}

@@ -1,0 +1,54 @@
+#pragma once
+// The applied-loads interface between the multibody and everything that pushes on it (hydro,
+// mooring, controller, blades/aero). The driver implements LoadProvider; advance() calls it at
+// every Runge–Kutta stage with the stage time and stage state, so pose- and velocity-dependent
+// loads (hydrostatics, Morison drag, mooring) are consistent with the integration; loads the
+// driver holds over a large step (averaged blade root loads, generator torque) are simply returned
+// unchanged at every stage.
+#include <array>
+
+#include "fowtsim/core/interface.hpp"
+#include "fowtsim/core/types.hpp"
+#include "fowtsim/multibody/model.hpp"
+#include "fowtsim/multibody/state.hpp"
+
+namespace fowtsim::multibody {
+
+// Everything that acts on the structure at one instant. Forces in g [N]; moments in g [N·m].
+struct AppliedLoads {
+  Vec3 platform_force_N = Vec3::Zero();      // on the base body (hydro + mooring + …), g [N]
+  Vec3 platform_moment_N_m = Vec3::Zero();   // about the platform reference point r, g [N·m]
+  // Added mass about r in g, acting as [F; M] = −A [a_r; α] (a_r, α in g); goes to the left-hand
+  // side. Must be symmetric positive semi-definite (hydro's Output::added_mass).
+  Mat6 platform_added_mass = Mat6::Zero();   // [kg, kg·m, kg·m²]
+  double generator_torque_N_m = 0.0;         // HSS electrical torque (OpenFAST GenTq sign: > 0 brakes ψ̇ > 0) [N·m]
+  // Flexible blades: load of blade i on the hub at its root (force; moment about point_m; both g).
+  // It carries the blade's weight, inertia and gyroscopic effect. Must stay zero with rigid blades.
+  std::array<RootLoads, kMaxBlades> blade_root{};
+  // Resultant aerodynamic (or any external) load on the rotor body: force at the rotor apex and
+  // moment about the apex, g. With rigid blades the driver sums its blade-node loads here.
+  Vec3 rotor_force_N = Vec3::Zero();         // [N]
+  Vec3 rotor_moment_N_m = Vec3::Zero();      // about the apex [N·m]
+  bool gravity = true;                       // weight of every body, Params::gravity_m_s2 along −z_g
+};
+
+// Prescribed nacelle yaw motion (used only with NacelleParams::yaw_prescribed).
+struct YawMotion {
+  double angle_rad = 0.0;                    // yaw of n about z_b [rad]
+  double rate_rad_s = 0.0;                   // its first time derivative [rad/s]
+  double acceleration_rad_s2 = 0.0;          // its second time derivative [rad/s²]
+};
+
+// Implemented by the driver (and by tests). Called from advance() at every stage; must not
+// allocate if the step is to stay allocation-free. A function may throw to abort the step.
+class LoadProvider {
+ public:
+  virtual ~LoadProvider() = default;
+  // Loads at time t for the stage state (its nacelle yaw already set from nacelle_yaw(t)).
+  // `out` arrives default-constructed (all zero, gravity on).
+  virtual void loads(double t, const State& state, AppliedLoads& out) = 0;
+  // The prescribed yaw at time t; called before loads() when the model's yaw is prescribed.
+  virtual YawMotion nacelle_yaw(double /*t*/) { return {}; }
+};
+
+}  // namespace fowtsim::multibody

@@ -1,0 +1,25 @@
+#pragma once
+// The state the multibody integrates: plain, copyable, fixed size (retry a step, checkpoint,
+// perturb). The platform orientation is a unit quaternion so that no attitude is singular
+// (Euler 1-2-3 angles lock at θ2 = ±90°); Euler angles are only computed for output.
+#include <Eigen/Geometry>
+
+#include "fowtsim/core/types.hpp"
+
+namespace fowtsim::multibody {
+
+struct State {
+  Vec3 position_m = Vec3::Zero();                   // r: platform reference point in g [m]
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // T_gb as a unit quaternion [-]
+  Vec3 velocity_m_s = Vec3::Zero();                 // ṙ in g [m/s]
+  Vec3 angular_velocity_rad_s = Vec3::Zero();       // ω of the platform, in b [rad/s]
+  double rotor_azimuth_rad = 0.0;                   // ψ: rotor about x_s relative to the nacelle [rad], unwrapped
+  double rotor_speed_rad_s = 0.0;                   // ψ̇ (LSS) [rad/s]
+  double generator_azimuth_rad = 0.0;               // θ_g: generator angle / gearbox ratio (LSS side) [rad]
+  double generator_speed_rad_s = 0.0;               // θ̇_g [rad/s]; GenSpeed = N θ̇_g; = ψ̇ with a rigid shaft
+  double nacelle_yaw_rad = 0.0;                     // nacelle yaw about z_b (prescribed or fixed) [rad]
+  double nacelle_yaw_rate_rad_s = 0.0;              // [rad/s]
+  double nacelle_yaw_acceleration_rad_s2 = 0.0;     // [rad/s²]
+};
+
+}  // namespace fowtsim::multibody

@@ -1,0 +1,173 @@
+#include "fowtsim/multibody/dynamics.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <Eigen/Cholesky>
+
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/core/rotation.hpp"
+
+namespace fowtsim::multibody {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// One rigid body as seen by the equations of motion: CM point, rotation, inertia in g.
+struct BodyView {
+  double mass;
+  const PointKinematics* cm;
+  const RotationKinematics* rotation;
+  Mat3 inertia_g;
+};
+
+// The four bodies: base, nacelle, rotor and the (massless, axisymmetric) generator rotor.
+int body_views(const Model& model, const ChainKinematics& k, BodyView (&views)[4]) {
+  auto world = [](const Mat3& t, const Mat3& i) { return Mat3(t * i * t.transpose()); };
+  views[0] = {model.base.mass_kg, &k.base_cm, &k.base, world(k.base.orientation, model.base.inertia_kg_m2)};
+  views[1] = {model.nacelle.mass_kg, &k.nacelle_cm, &k.nacelle,
+              world(k.nacelle.orientation, model.nacelle.inertia_kg_m2)};
+  views[2] = {model.rotor.mass_kg, &k.rotor_cm, &k.rotor, world(k.rotor.orientation, model.rotor.inertia_kg_m2)};
+  const Vec3 e_s = k.shaft.orientation.col(0);
+  views[3] = {0.0, &k.apex, &k.generator, Mat3(model.generator_inertia_kg_m2 * e_s * e_s.transpose())};
+  return 4;
+}
+
+// Pᵀ A P with P = [J_v,ref; J_ω,base] (6 × kMaxDofs).
+void add_added_mass(const ChainKinematics& k, const Mat6& added_mass, GeneralisedMatrix& m) {
+  Eigen::Matrix<double, 6, kMaxDofs> p;
+  p.topRows<3>() = k.reference.jacobian;
+  p.bottomRows<3>() = k.base.jacobian;
+  m.noalias() += p.transpose() * added_mass * p;
+}
+
+GeneralisedMatrix assemble_mass(const Model& model, const ChainKinematics& k, const Mat6& added_mass) {
+  BodyView views[4];
+  const int n = body_views(model, k, views);
+  GeneralisedMatrix m = GeneralisedMatrix::Zero();
+  for (int i = 0; i < n; ++i) {
+    const BodyView& b = views[i];
+    m.noalias() += b.mass * b.cm->jacobian.transpose() * b.cm->jacobian;
+    m.noalias() += b.rotation->jacobian.transpose() * b.inertia_g * b.rotation->jacobian;
+  }
+  add_added_mass(k, added_mass, m);
+  return m;
+}
+
+}  // namespace
+
+State initial_state(const Model& model) {
+  const InitialConditions& ic = model.params.initial_conditions;
+  State s;
+  s.position_m = ic.platform_position_m;
+  s.orientation = Eigen::Quaterniond(euler123_to_matrix(ic.platform_angles_deg * kDeg)).normalized();
+  s.velocity_m_s = ic.platform_velocity_m_s;
+  s.angular_velocity_rad_s = ic.platform_angular_velocity_deg_s * kDeg;
+  s.rotor_azimuth_rad = ic.azimuth_deg * kDeg;
+  s.rotor_speed_rad_s = ic.rotor_speed_rpm * std::numbers::pi / 30.0;
+  s.generator_azimuth_rad = s.rotor_azimuth_rad;
+  s.generator_speed_rad_s = s.rotor_speed_rad_s;
+  s.nacelle_yaw_rad = ic.nacelle_yaw_deg * kDeg;
+  return s;
+}
+
+GeneralisedMatrix generalised_mass(const Model& model, const State& state, const Mat6& added_mass) {
+  ChainKinematics k;
+  chain_kinematics(model, state, k);
+  return assemble_mass(model, k, added_mass);
+}
+
+void evaluate(const Model& model, const State& state, const AppliedLoads& loads, double t,
+              Evaluation& out) {
+  ChainKinematics& k = out.kinematics;
+  chain_kinematics(model, state, k);
+  out.mass = assemble_mass(model, k, loads.platform_added_mass);
+
+  GeneralisedVector& f = out.force;
+  f.setZero();
+  const Vec3 gravity(0.0, 0.0, loads.gravity ? -model.params.gravity_m_s2 : 0.0);
+  BodyView views[4];
+  const int n = body_views(model, k, views);
+  for (int i = 0; i < n; ++i) {
+    const BodyView& b = views[i];
+    const Vec3& w = b.rotation->angular_velocity_rad_s;
+    // Weight minus the velocity-product part of the inertia force and moment (Kane's F*).
+    f.noalias() += b.cm->jacobian.transpose() * (b.mass * (gravity - b.cm->bias_acceleration_m_s2));
+    f.noalias() -= b.rotation->jacobian.transpose() *
+                   (b.inertia_g * b.rotation->bias_angular_acceleration_rad_s2 + w.cross(b.inertia_g * w));
+  }
+  // Added mass: its bias part −Pᵀ A [a_r,bias; α_bias] vanishes because a_r = v̇ and α = T_gb ω̇_b
+  // have no velocity-product terms in these generalised speeds.
+
+  // Platform loads at r.
+  f.noalias() += k.reference.jacobian.transpose() * loads.platform_force_N;
+  f.noalias() += k.base.jacobian.transpose() * loads.platform_moment_N_m;
+
+  // Rotor loads: everything reduced to a force at the apex and a moment about it.
+  Vec3 rotor_force = loads.rotor_force_N;
+  Vec3 rotor_moment = loads.rotor_moment_N_m;
+  for (int i = 0; i < kMaxBlades; ++i) {
+    const RootLoads& root = loads.blade_root[i];
+    rotor_force += root.force_N;
+    rotor_moment += root.moment_N_m + (root.point_m - k.apex.position_m).cross(root.force_N);
+  }
+  f.noalias() += k.apex.jacobian.transpose() * rotor_force;
+  f.noalias() += k.rotor.jacobian.transpose() * rotor_moment;
+
+  // Drivetrain: generator torque on the HSS (LSS-equivalent N T), shaft spring and damper.
+  f[model.generator_dof] -= model.gearbox_ratio * loads.generator_torque_N_m;
+  if (model.dof_count > kGenerator) {
+    const DrivetrainParams& d = model.params.drivetrain;
+    const double torque = d.torsional_stiffness_N_m_rad * (state.rotor_azimuth_rad - state.generator_azimuth_rad) +
+                          d.torsional_damping_N_m_s_rad * (state.rotor_speed_rad_s - state.generator_speed_rad_s);
+    f[kRotor] -= torque;
+    f[kGenerator] += torque;
+  }
+
+  // Solve; with a rigid shaft the unused last row is made the identity so one fixed-size
+  // Cholesky serves both cases.
+  GeneralisedMatrix m = out.mass;
+  if (model.dof_count < kMaxDofs) {
+    m(kGenerator, kGenerator) = 1.0;
+    f[kGenerator] = 0.0;
+  }
+  const Eigen::LLT<GeneralisedMatrix> llt(m);
+  if (llt.info() != Eigen::Success) {
+    throw NumericalError({"multibody", t, "mass matrix M(q)",
+                          "check the added mass handed in (it must be symmetric positive semi-definite)"},
+                         "the generalised mass matrix is not positive definite");
+  }
+  out.acceleration = llt.solve(f);
+  for (int i = 0; i < kMaxDofs; ++i) {
+    if (!std::isfinite(out.acceleration[i])) {
+      throw NumericalError({"multibody", t, "generalised acceleration u̇[" + std::to_string(i) + "]",
+                            "check the applied loads for NaN/Inf or reduce the time step"},
+                           "non-finite acceleration");
+    }
+  }
+}
+
+Invariants invariants(const Model& model, const State& state, bool gravity) {
+  ChainKinematics k;
+  chain_kinematics(model, state, k);
+  BodyView views[4];
+  const int n = body_views(model, k, views);
+  Invariants inv;
+  for (int i = 0; i < n; ++i) {
+    const BodyView& b = views[i];
+    const Vec3& v = b.cm->velocity_m_s;
+    const Vec3& w = b.rotation->angular_velocity_rad_s;
+    inv.kinetic_energy_J += 0.5 * b.mass * v.squaredNorm() + 0.5 * w.dot(b.inertia_g * w);
+    inv.linear_momentum_N_s += b.mass * v;
+    inv.angular_momentum_N_m_s += b.cm->position_m.cross(b.mass * v) + b.inertia_g * w;
+    if (gravity) inv.potential_energy_J += b.mass * model.params.gravity_m_s2 * b.cm->position_m.z();
+  }
+  if (model.dof_count > kGenerator) {
+    const double twist = state.rotor_azimuth_rad - state.generator_azimuth_rad;
+    inv.potential_energy_J += 0.5 * model.params.drivetrain.torsional_stiffness_N_m_rad * twist * twist;
+  }
+  return inv;
+}
+
+}  // namespace fowtsim::multibody

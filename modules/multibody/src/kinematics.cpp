@@ -1,0 +1,132 @@
+#include "fowtsim/multibody/kinematics.hpp"
+
+#include <cmath>
+
+#include "fowtsim/core/rotation.hpp"
+
+namespace fowtsim::multibody {
+namespace {
+
+Mat3 rot_x(double a) {
+  Mat3 m;
+  m << 1, 0, 0, 0, std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a);
+  return m;
+}
+Mat3 rot_z(double a) {
+  Mat3 m;
+  m << std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1;
+  return m;
+}
+
+// Child body turning relative to `parent` about the unit axis e (g) at relative rate `rate`
+// (and relative acceleration `rate_dot` when prescribed): ω = ω_p + rate e,
+// α_bias = α_p,bias + rate_dot e + ω_p × (rate e). `column` ≥ 0 adds `ratio` · e to J_ω there
+// (a DOF), otherwise the motion is prescribed.
+RotationKinematics child_rotation(const RotationKinematics& parent, const Mat3& orientation,
+                                  const Vec3& e, double rate, double rate_dot, int column,
+                                  double ratio) {
+  RotationKinematics c;
+  c.orientation = orientation;
+  c.angular_velocity_rad_s = parent.angular_velocity_rad_s + rate * e;
+  c.bias_angular_acceleration_rad_s2 = parent.bias_angular_acceleration_rad_s2 +
+                                       parent.angular_velocity_rad_s.cross(rate * e);
+  c.jacobian = parent.jacobian;
+  if (column >= 0) {
+    c.jacobian.col(column) += ratio * e;
+  } else {
+    c.bias_angular_acceleration_rad_s2 += rate_dot * e;
+  }
+  return c;
+}
+
+}  // namespace
+
+GeneralisedVector generalised_velocities(const Model& model, const State& state) {
+  GeneralisedVector u = GeneralisedVector::Zero();
+  u.segment<3>(kSurge) = state.velocity_m_s;
+  u.segment<3>(kRoll) = state.angular_velocity_rad_s;
+  u[kRotor] = state.rotor_speed_rad_s;
+  if (model.dof_count > kGenerator) u[kGenerator] = state.generator_speed_rad_s;
+  return u;
+}
+
+PointKinematics point_on(const PointKinematics& origin, const RotationKinematics& body,
+                         const Vec3& position_m) {
+  const Vec3 rho = position_m - origin.position_m;
+  const Vec3& w = body.angular_velocity_rad_s;
+  PointKinematics p;
+  p.position_m = position_m;
+  p.velocity_m_s = origin.velocity_m_s + w.cross(rho);
+  p.bias_acceleration_m_s2 = origin.bias_acceleration_m_s2 +
+                             body.bias_angular_acceleration_rad_s2.cross(rho) + w.cross(w.cross(rho));
+  p.jacobian = origin.jacobian - skew(rho) * body.jacobian;  // v_P = v_O − ρ̃ ω
+  return p;
+}
+
+void chain_kinematics(const Model& model, const State& state, ChainKinematics& out) {
+  const GeneralisedVector u = generalised_velocities(model, state);
+  const double ratio = model.gearbox_ratio;
+
+  // Base body: ω_g = T_gb ω_b, and α_g = T_gb ω̇_b exactly (d/dt(T ω_b) = T(ω̃ ω_b + ω̇_b)).
+  RotationKinematics& b = out.base;
+  b.orientation = state.orientation.normalized().toRotationMatrix();
+  b.jacobian.setZero();
+  b.jacobian.block<3, 3>(0, kRoll) = b.orientation;
+  b.angular_velocity_rad_s = b.orientation * state.angular_velocity_rad_s;
+  b.bias_angular_acceleration_rad_s2.setZero();
+
+  PointKinematics& r = out.reference;
+  r.position_m = state.position_m;
+  r.velocity_m_s = state.velocity_m_s;
+  r.bias_acceleration_m_s2.setZero();
+  r.jacobian.setZero();
+  r.jacobian.block<3, 3>(0, kSurge).setIdentity();
+
+  const Mat3& t_gb = b.orientation;
+  out.base_cm = point_on(r, b, r.position_m + t_gb * model.base.cm_m);
+  out.tower_cm = point_on(r, b, r.position_m + t_gb * model.tower.cm_m);
+  out.tower_base = point_on(r, b, r.position_m + t_gb * model.tower_base_b);
+  out.tower_top = point_on(r, b, r.position_m + t_gb * model.tower_top_b);
+
+  // Nacelle: prescribed yaw about z_b.
+  const Mat3 t_gn = t_gb * rot_z(state.nacelle_yaw_rad);
+  out.nacelle = child_rotation(b, t_gn, t_gb.col(2), state.nacelle_yaw_rate_rad_s,
+                               state.nacelle_yaw_acceleration_rad_s2, -1, 0.0);
+  const Vec3& top = out.tower_top.position_m;
+  out.nacelle_cm = point_on(out.tower_top, out.nacelle, top + t_gn * model.nacelle.cm_m);
+  out.imu = point_on(out.tower_top, out.nacelle, top + t_gn * model.imu_n);
+  out.apex = point_on(out.tower_top, out.nacelle, top + t_gn * model.apex_n);
+
+  // Shaft (fixed in the nacelle), rotor (ψ about x_s) and generator (N θ_g about x_s).
+  out.shaft = out.nacelle;
+  out.shaft.orientation = t_gn * model.shaft_in_nacelle;
+  const Vec3 e_s = out.shaft.orientation.col(0);
+  out.rotor = child_rotation(out.nacelle, out.shaft.orientation * rot_x(state.rotor_azimuth_rad),
+                             e_s, u[kRotor], 0.0, kRotor, 1.0);
+  const double generator_rate = model.dof_count > kGenerator ? u[kGenerator] : u[kRotor];
+  out.generator = child_rotation(out.nacelle, out.shaft.orientation, e_s, ratio * generator_rate,
+                                 0.0, model.generator_dof, ratio);
+
+  const Mat3& t_gh = out.rotor.orientation;
+  const Vec3& apex = out.apex.position_m;
+  out.rotor_cm = point_on(out.apex, out.rotor, apex + t_gh * model.rotor.cm_m);
+  for (int i = 0; i < model.blade_count; ++i) {
+    out.blade_root[i] = point_on(out.apex, out.rotor, apex + t_gh * model.blade_root_h[i]);
+    out.blade_root_orientation[i] = t_gh * model.blade_root_orientation_h[i];
+  }
+}
+
+FrameMotion frame_motion(const PointKinematics& p, const RotationKinematics& body,
+                         const Mat3& orientation, const GeneralisedVector& udot) {
+  FrameMotion m;
+  m.position_m = p.position_m;
+  m.orientation = orientation;
+  m.velocity_m_s = p.velocity_m_s;
+  m.acceleration_m_s2 = acceleration(p, udot);
+  // A frame fixed in the body: ω_f = T_gfᵀ ω_g and, since ω_g × ω_g = 0, ω̇_f = T_gfᵀ α_g.
+  m.angular_velocity_rad_s = orientation.transpose() * body.angular_velocity_rad_s;
+  m.angular_acceleration_rad_s2 = orientation.transpose() * angular_acceleration(body, udot);
+  return m;
+}
+
+}  // namespace fowtsim::multibody

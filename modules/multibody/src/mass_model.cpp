@@ -1,0 +1,320 @@
+// make_model(): validation of Params and the mass properties of the rigid bodies.
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/core/rotation.hpp"
+#include "fowtsim/multibody/dynamics.hpp"
+#include "fowtsim/multibody/model.hpp"
+
+namespace fowtsim::multibody {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// ∫_a^b μ(s) s^k ds for μ linear from μa at a to μb at b, exactly (k = 0, 1, 2).
+double linear_moment(double a, double b, double mu_a, double mu_b, int k) {
+  // μ(s) = μa + (μb − μa)(s − a)/(b − a); ∫ s^k μ = μa I_k + slope (I_{k+1} − a I_k).
+  auto power_integral = [&](int n) { return (std::pow(b, n + 1) - std::pow(a, n + 1)) / (n + 1); };
+  const double slope = (mu_b - mu_a) / (b - a);
+  return mu_a * power_integral(k) + slope * (power_integral(k + 1) - a * power_integral(k));
+}
+
+// Mass, first and second moments of a piecewise-linear line density over [0, length] about s = 0.
+BladeMassMoments line_moments(const std::vector<double>& fraction, const std::vector<double>& density,
+                              double scale, double length) {
+  BladeMassMoments m;
+  for (std::size_t i = 0; i + 1 < fraction.size(); ++i) {
+    const double a = fraction[i] * length, b = fraction[i + 1] * length;
+    const double mu_a = scale * density[i], mu_b = scale * density[i + 1];
+    m.mass_kg += linear_moment(a, b, mu_a, mu_b, 0);
+    m.first_moment_kg_m += linear_moment(a, b, mu_a, mu_b, 1);
+    m.second_moment_kg_m2 += linear_moment(a, b, mu_a, mu_b, 2);
+  }
+  return m;
+}
+
+// Adds body (mass properties about its own CM, in the same frame) to an accumulated body.
+RigidBody combine(const RigidBody& a, const RigidBody& b) {
+  RigidBody c;
+  c.mass_kg = a.mass_kg + b.mass_kg;
+  if (c.mass_kg <= 0.0) return c;
+  c.cm_m = (a.mass_kg * a.cm_m + b.mass_kg * b.cm_m) / c.mass_kg;
+  // Parallel-axis theorem: I_C = I_cm + m (|d|² 1 − d dᵀ).
+  auto shifted = [&](const RigidBody& x) {
+    const Vec3 d = x.cm_m - c.cm_m;
+    return Mat3(x.inertia_kg_m2 + x.mass_kg * (d.squaredNorm() * Mat3::Identity() - d * d.transpose()));
+  };
+  c.inertia_kg_m2 = shifted(a) + shifted(b);
+  return c;
+}
+
+RigidBody point_mass(double mass, const Vec3& at) { return RigidBody{mass, at, Mat3::Zero()}; }
+
+Mat3 rot_x(double a) {
+  Mat3 m;
+  m << 1, 0, 0, 0, std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a);
+  return m;
+}
+Mat3 rot_y(double a) {
+  Mat3 m;
+  m << std::cos(a), 0, std::sin(a), 0, 1, 0, -std::sin(a), 0, std::cos(a);
+  return m;
+}
+
+class Problems {
+ public:
+  void require(bool ok, const std::string& key, double value, const std::string& expected) {
+    if (!ok) out_ << "\n  structure." << key << " = " << value << ": expected " << expected;
+  }
+  void add(const std::string& text) { out_ << "\n  " << text; }
+  void throw_if_any() const {
+    const std::string s = out_.str();
+    if (!s.empty()) {
+      throw InputError({"multibody", std::nullopt, "structure", "fix the listed keys of the deck"},
+                       "invalid multibody parameters:" + s);
+    }
+  }
+
+ private:
+  std::ostringstream out_;
+};
+
+void validate(const Params& p) {
+  Problems e;
+  auto finite_nonneg = [&](double v, const std::string& key) {
+    e.require(std::isfinite(v) && v >= 0.0, key, v, "a finite number >= 0");
+  };
+  auto finite = [&](double v, const std::string& key) {
+    e.require(std::isfinite(v), key, v, "a finite number");
+  };
+  auto finite_vec = [&](const Vec3& v, const std::string& key) {
+    for (int i = 0; i < 3; ++i) finite(v[i], key + "[" + std::to_string(i) + "]");
+  };
+  e.require(std::isfinite(p.gravity_m_s2) && p.gravity_m_s2 >= 0.0, "gravity_m_s2", p.gravity_m_s2, ">= 0");
+  e.require(std::isfinite(p.max_step_s) && p.max_step_s > 0.0, "max_step_s", p.max_step_s, "> 0");
+  // Platform
+  finite_nonneg(p.platform.mass_kg, "platform.mass_kg");
+  finite_vec(p.platform.cm_m, "platform.cm_m");
+  finite_nonneg(p.platform.roll_inertia_kg_m2, "platform.roll_inertia_kg_m2");
+  finite_nonneg(p.platform.pitch_inertia_kg_m2, "platform.pitch_inertia_kg_m2");
+  finite_nonneg(p.platform.yaw_inertia_kg_m2, "platform.yaw_inertia_kg_m2");
+  finite(p.platform.xy_inertia_kg_m2, "platform.xy_inertia_kg_m2");
+  finite(p.platform.yz_inertia_kg_m2, "platform.yz_inertia_kg_m2");
+  finite(p.platform.xz_inertia_kg_m2, "platform.xz_inertia_kg_m2");
+  finite(p.platform.reference_height_m, "platform.reference_height_m");
+  // Tower
+  finite(p.tower.base_height_m, "tower.base_height_m");
+  e.require(std::isfinite(p.tower.top_height_m) && p.tower.top_height_m > p.tower.base_height_m,
+            "tower.top_height_m", p.tower.top_height_m, "> tower.base_height_m");
+  finite_nonneg(p.tower.mass_density_scale, "tower.mass_density_scale");
+  const auto& f = p.tower.station_fraction;
+  if (f.size() < 2 || f.size() != p.tower.mass_density_kg_m.size()) {
+    e.add("structure.tower.station_fraction / mass_density_kg_m: expected two equally long lists "
+          "of at least 2 entries (got " + std::to_string(f.size()) + " and " +
+          std::to_string(p.tower.mass_density_kg_m.size()) + ")");
+  } else {
+    e.require(f.front() == 0.0, "tower.station_fraction[0]", f.front(), "0");
+    e.require(f.back() == 1.0, "tower.station_fraction[last]", f.back(), "1");
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      if (i > 0) e.require(f[i] > f[i - 1], "tower.station_fraction[" + std::to_string(i) + "]", f[i], "strictly increasing");
+      finite_nonneg(p.tower.mass_density_kg_m[i], "tower.mass_density_kg_m[" + std::to_string(i) + "]");
+    }
+  }
+  // Nacelle
+  finite_nonneg(p.nacelle.mass_kg, "nacelle.mass_kg");
+  finite_vec(p.nacelle.cm_m, "nacelle.cm_m");
+  finite_vec(p.nacelle.imu_m, "nacelle.imu_m");
+  finite_nonneg(p.nacelle.yaw_bearing_mass_kg, "nacelle.yaw_bearing_mass_kg");
+  finite(p.nacelle.tower_to_shaft_m, "nacelle.tower_to_shaft_m");
+  finite(p.nacelle.overhang_m, "nacelle.overhang_m");
+  e.require(std::isfinite(p.nacelle.shaft_tilt_deg) && std::abs(p.nacelle.shaft_tilt_deg) < 90.0,
+            "nacelle.shaft_tilt_deg", p.nacelle.shaft_tilt_deg, "|tilt| < 90");
+  const double own = p.nacelle.mass_kg * p.nacelle.cm_m.head<2>().squaredNorm();
+  e.require(std::isfinite(p.nacelle.yaw_inertia_kg_m2) && p.nacelle.yaw_inertia_kg_m2 >= own,
+            "nacelle.yaw_inertia_kg_m2", p.nacelle.yaw_inertia_kg_m2,
+            ">= mass · (cm_x² + cm_y²) = " + std::to_string(own) +
+                " (it is about the yaw axis; less would be a negative inertia about the CM)");
+  // Rotor
+  const auto& r = p.rotor;
+  e.require(r.blade_count >= 1 && r.blade_count <= kMaxBlades, "rotor.blade_count", r.blade_count, "1, 2 or 3");
+  finite_nonneg(r.hub_mass_kg, "rotor.hub_mass_kg");
+  finite_nonneg(r.hub_inertia_kg_m2, "rotor.hub_inertia_kg_m2");
+  finite(r.hub_cm_m, "rotor.hub_cm_m");
+  finite_nonneg(r.hub_radius_m, "rotor.hub_radius_m");
+  e.require(std::isfinite(r.tip_radius_m) && r.tip_radius_m > r.hub_radius_m, "rotor.tip_radius_m",
+            r.tip_radius_m, "> rotor.hub_radius_m");
+  e.require(std::isfinite(r.precone_deg) && std::abs(r.precone_deg) < 90.0, "rotor.precone_deg",
+            r.precone_deg, "|precone| < 90");
+  finite_nonneg(r.blade_mass_kg, "rotor.blade_mass_kg");
+  finite_nonneg(r.blade_first_mass_moment_kg_m, "rotor.blade_first_mass_moment_kg_m");
+  finite_nonneg(r.blade_second_mass_moment_kg_m2, "rotor.blade_second_mass_moment_kg_m2");
+  // Cauchy–Schwarz: (∫ m r)² ≤ ∫ m · ∫ m r² for any non-negative distribution.
+  e.require(r.blade_first_mass_moment_kg_m * r.blade_first_mass_moment_kg_m <=
+                r.blade_mass_kg * r.blade_second_mass_moment_kg_m2 * (1.0 + 1e-12),
+            "rotor.blade_first_mass_moment_kg_m", r.blade_first_mass_moment_kg_m,
+            "first² <= mass · second moment (a real mass distribution)");
+  // Drivetrain
+  const auto& d = p.drivetrain;
+  e.require(std::isfinite(d.gearbox_ratio) && d.gearbox_ratio > 0.0, "drivetrain.gearbox_ratio", d.gearbox_ratio, "> 0");
+  finite_nonneg(d.generator_inertia_kg_m2, "drivetrain.generator_inertia_kg_m2");
+  finite_nonneg(d.torsional_stiffness_N_m_rad, "drivetrain.torsional_stiffness_N_m_rad");
+  finite_nonneg(d.torsional_damping_N_m_s_rad, "drivetrain.torsional_damping_N_m_s_rad");
+  if (d.torsional_flexibility) {
+    e.require(d.generator_inertia_kg_m2 > 0.0, "drivetrain.generator_inertia_kg_m2",
+              d.generator_inertia_kg_m2, "> 0 with torsional_flexibility (the generator azimuth is a DOF)");
+  }
+  // Initial conditions
+  const auto& ic = p.initial_conditions;
+  finite_vec(ic.platform_position_m, "initial_conditions.platform_position_m");
+  finite_vec(ic.platform_angles_deg, "initial_conditions.platform_angles_deg");
+  finite_vec(ic.platform_velocity_m_s, "initial_conditions.platform_velocity_m_s");
+  finite_vec(ic.platform_angular_velocity_deg_s, "initial_conditions.platform_angular_velocity_deg_s");
+  finite(ic.azimuth_deg, "initial_conditions.azimuth_deg");
+  finite(ic.rotor_speed_rpm, "initial_conditions.rotor_speed_rpm");
+  finite(ic.nacelle_yaw_deg, "initial_conditions.nacelle_yaw_deg");
+  e.throw_if_any();
+}
+
+}  // namespace
+
+BladeMassMoments blade_mass_moments(const std::vector<double>& span_fraction,
+                                    const std::vector<double>& mass_density_kg_m,
+                                    double mass_density_scale, double blade_length_m) {
+  return line_moments(span_fraction, mass_density_kg_m, mass_density_scale, blade_length_m);
+}
+
+Model make_model(const Params& params) {
+  validate(params);
+  Model m;
+  m.params = params;
+  const auto& p = params;
+  const double ref = p.platform.reference_height_m;
+
+  // Platform: ElastoDyn's inertias are about the platform CM; products are −∫xy dm etc.
+  RigidBody platform;
+  platform.mass_kg = p.platform.mass_kg;
+  platform.cm_m = p.platform.cm_m - Vec3(0.0, 0.0, ref);
+  platform.inertia_kg_m2 << p.platform.roll_inertia_kg_m2, p.platform.xy_inertia_kg_m2,
+      p.platform.xz_inertia_kg_m2, p.platform.xy_inertia_kg_m2, p.platform.pitch_inertia_kg_m2,
+      p.platform.yz_inertia_kg_m2, p.platform.xz_inertia_kg_m2, p.platform.yz_inertia_kg_m2,
+      p.platform.yaw_inertia_kg_m2;
+
+  // Tower: line mass on z_b; I_xx = I_yy = ∫ μ (z − z_cm)² dz about its CM, I_zz = 0.
+  const double length = p.tower.top_height_m - p.tower.base_height_m;
+  const BladeMassMoments tm =
+      line_moments(p.tower.station_fraction, p.tower.mass_density_kg_m, p.tower.mass_density_scale, length);
+  m.tower_base_b = Vec3(0.0, 0.0, p.tower.base_height_m - ref);
+  m.tower_top_b = Vec3(0.0, 0.0, p.tower.top_height_m - ref);
+  RigidBody tower;
+  tower.mass_kg = tm.mass_kg;
+  if (tm.mass_kg > 0.0) {
+    const double z_cm = tm.first_moment_kg_m / tm.mass_kg;
+    tower.cm_m = m.tower_base_b + Vec3(0.0, 0.0, z_cm);
+    const double i_cm = tm.second_moment_kg_m2 - tm.mass_kg * z_cm * z_cm;
+    tower.inertia_kg_m2.diagonal() << i_cm, i_cm, 0.0;
+  } else {
+    tower.cm_m = m.tower_base_b;
+  }
+  m.tower = combine(tower, point_mass(p.nacelle.yaw_bearing_mass_kg, m.tower_top_b));
+  m.base = combine(platform, m.tower);
+
+  // Nacelle: NacYIner is about the yaw axis; about its own CM the nacelle keeps only the rest.
+  m.nacelle.mass_kg = p.nacelle.mass_kg;
+  m.nacelle.cm_m = p.nacelle.cm_m;
+  m.nacelle.inertia_kg_m2(2, 2) =
+      p.nacelle.yaw_inertia_kg_m2 - p.nacelle.mass_kg * p.nacelle.cm_m.head<2>().squaredNorm();
+  m.imu_n = p.nacelle.imu_m;
+
+  // Shaft: x_s = (cos τ, 0, sin τ) in n with τ = ShftTilt, i.e. T_ns = R_y(−τ); the apex is
+  // Twr2Shft up the yaw axis then OverHang along x_s (ElastoDyn's geometry).
+  const double tilt = p.nacelle.shaft_tilt_deg * kDeg;
+  m.shaft_in_nacelle = rot_y(-tilt);
+  m.apex_n = Vec3(0.0, 0.0, p.nacelle.tower_to_shaft_m) + p.nacelle.overhang_m * m.shaft_in_nacelle.col(0);
+
+  // Rotor: hub (axial inertia only, as ElastoDyn's HubIner) + rigid blades as line masses along
+  // the preconed pitch axes a_i; a line mass has I = J₂ (1 − a aᵀ) about the apex.
+  m.blade_count = p.rotor.blade_count;
+  const double cone = p.rotor.precone_deg * kDeg;
+  RigidBody rotor{p.rotor.hub_mass_kg, Vec3(p.rotor.hub_cm_m, 0.0, 0.0), Mat3::Zero()};
+  rotor.inertia_kg_m2(0, 0) = p.rotor.hub_inertia_kg_m2;
+  for (int i = 0; i < m.blade_count; ++i) {
+    const double azimuth = 2.0 * std::numbers::pi * i / m.blade_count;
+    m.blade_root_orientation_h[i] = rot_x(azimuth) * rot_y(cone);
+    const Vec3 axis = m.blade_root_orientation_h[i].col(2);
+    m.blade_root_h[i] = p.rotor.hub_radius_m * axis;
+    if (!p.rotor.flexible_blades && p.rotor.blade_mass_kg > 0.0) {
+      const double hr = p.rotor.hub_radius_m;
+      const double mass = p.rotor.blade_mass_kg;
+      const double s1 = p.rotor.blade_first_mass_moment_kg_m + hr * mass;  // about the apex
+      const double s2 = p.rotor.blade_second_mass_moment_kg_m2 +
+                        2.0 * hr * p.rotor.blade_first_mass_moment_kg_m + hr * hr * mass;
+      RigidBody blade;
+      blade.mass_kg = mass;
+      blade.cm_m = (s1 / mass) * axis;
+      // About the CM: J₂,cm = J₂ − m r_cm², then the line formula.
+      blade.inertia_kg_m2 = (s2 - s1 * s1 / mass) * (Mat3::Identity() - axis * axis.transpose());
+      rotor = combine(rotor, blade);
+    }
+  }
+  m.rotor = rotor;
+
+  m.gearbox_ratio = p.drivetrain.gearbox_ratio;
+  m.generator_inertia_kg_m2 = p.drivetrain.generator_inertia_kg_m2;
+  m.dof_count = p.drivetrain.torsional_flexibility ? 8 : 7;
+  m.generator_dof = p.drivetrain.torsional_flexibility ? kGenerator : kRotor;
+
+  // A singular mass matrix (a DOF with no inertia) is an input error, not a run-time NaN.
+  const State s0 = initial_state(m);
+  const GeneralisedMatrix mass = generalised_mass(m, s0, Mat6::Zero());
+  const Eigen::VectorXd diag = mass.diagonal().head(m.dof_count);
+  // Relative to the largest diagonal entry: M mixes kg, kg·m and kg·m² but the test only has to
+  // catch an exactly (or numerically) missing inertia.
+  const double scale = diag.maxCoeff();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(mass.topLeftCorner(m.dof_count, m.dof_count));
+  if (!(eig.eigenvalues().minCoeff() > 1e-12 * scale)) {
+    static const char* names[] = {"surge", "sway", "heave", "roll", "pitch", "yaw", "rotor azimuth",
+                                  "generator azimuth"};
+    std::string which;
+    for (int i = 0; i < m.dof_count; ++i) {
+      if (diag[i] <= 1e-12 * scale) which += std::string(which.empty() ? "" : ", ") + names[i];
+    }
+    throw InputError({"multibody", std::nullopt, "structure (mass and inertia)",
+                      "give the bodies mass and inertia for every free DOF"},
+                     "the structure's mass matrix is singular: no mass or inertia for " +
+                         (which.empty() ? std::string("a combination of DOFs") : which));
+  }
+  return m;
+}
+
+MassSummary mass_summary(const Model& model) {
+  const State s0 = initial_state(model);
+  ChainKinematics k;
+  chain_kinematics(model, s0, k);
+  // Bodies in g at the initial pose, then back into b.
+  const Mat3 t_gb = k.base.orientation;
+  auto in_b = [&](const RigidBody& body, const Mat3& t_gk, const Vec3& cm_g) {
+    RigidBody x;
+    x.mass_kg = body.mass_kg;
+    x.cm_m = t_gb.transpose() * (cm_g - k.reference.position_m);
+    const Mat3 t_bk = t_gb.transpose() * t_gk;
+    x.inertia_kg_m2 = t_bk * body.inertia_kg_m2 * t_bk.transpose();
+    return x;
+  };
+  RigidBody all = in_b(model.base, k.base.orientation, k.base_cm.position_m);
+  all = combine(all, in_b(model.nacelle, k.nacelle.orientation, k.nacelle_cm.position_m));
+  all = combine(all, in_b(model.rotor, k.rotor.orientation, k.rotor_cm.position_m));
+  MassSummary s;
+  s.mass_kg = all.mass_kg;
+  s.cm_b_m = all.cm_m;
+  const Vec3& d = all.cm_m;
+  s.inertia_ref_kg_m2 = all.inertia_kg_m2 + all.mass_kg * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
+  return s;
+}
+
+}  // namespace fowtsim::multibody

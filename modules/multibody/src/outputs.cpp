@@ -1,0 +1,159 @@
+// Outputs: accelerations from the equations of motion, internal loads by inverse dynamics
+// (d'Alembert: the load a sub-chain exerts on its support is Σ (F_ext − m a) and Σ (M_ext −
+// I α − ω × I ω) plus the moments of those forces), and OpenFAST channels.
+#include <cmath>
+#include <numbers>
+
+#include "fowtsim/core/rotation.hpp"
+#include "fowtsim/multibody/multibody.hpp"
+
+namespace fowtsim::multibody {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+constexpr double kRadSToRpm = 30.0 / std::numbers::pi;
+
+// Adds the d'Alembert load of one body (weight − inertia force, − inertia moment) to a running
+// [F; M about `point`] in g.
+void add_body(double mass, const Mat3& inertia_body, const PointKinematics& cm, const RotationKinematics& rot,
+              const GeneralisedVector& udot, const Vec3& gravity, const Vec3& point, Vec6& load) {
+  const Mat3 inertia = rot.orientation * inertia_body * rot.orientation.transpose();
+  const Vec3& w = rot.angular_velocity_rad_s;
+  const Vec3 force = mass * (gravity - acceleration(cm, udot));
+  const Vec3 moment = -(inertia * angular_acceleration(rot, udot) + w.cross(inertia * w));
+  load.head<3>() += force;
+  load.tail<3>() += moment + (cm.position_m - point).cross(force);
+}
+
+}  // namespace
+
+Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const State& state, double t) {
+  Evaluation eval;
+  evaluate(model, state, loads, t, eval);
+  const ChainKinematics& k = eval.kinematics;
+  const GeneralisedVector& udot = eval.acceleration;
+  Output out;
+  out.acceleration = udot;
+  const Mat3& t_gb = k.base.orientation;
+  out.platform_angles_rad = matrix_to_euler123(t_gb);
+  out.platform_acceleration_m_s2 = acceleration(k.reference, udot);
+  out.platform_angular_acceleration_rad_s2 = angular_acceleration(k.base, udot);
+
+  // Yaw bearing: nacelle + rotor + generator (massless; its moment of inertia only), plus the
+  // rotor loads. Generator torque and shaft spring are internal to this sub-chain and cancel.
+  const Vec3 gravity(0.0, 0.0, loads.gravity ? -model.params.gravity_m_s2 : 0.0);
+  const Vec3& top = k.tower_top.position_m;
+  Vec6 yaw = Vec6::Zero();
+  add_body(model.nacelle.mass_kg, model.nacelle.inertia_kg_m2, k.nacelle_cm, k.nacelle, udot, gravity, top, yaw);
+  add_body(model.rotor.mass_kg, model.rotor.inertia_kg_m2, k.rotor_cm, k.rotor, udot, gravity, top, yaw);
+  Mat3 generator_inertia = Mat3::Zero();
+  generator_inertia(0, 0) = model.generator_inertia_kg_m2;  // in the shaft frame = generator's orientation
+  add_body(0.0, generator_inertia, k.apex, k.generator, udot, gravity, top, yaw);
+  Vec3 rotor_force = loads.rotor_force_N;
+  Vec3 rotor_moment = loads.rotor_moment_N_m + (k.apex.position_m - top).cross(loads.rotor_force_N);
+  for (int i = 0; i < kMaxBlades; ++i) {
+    const RootLoads& root = loads.blade_root[i];
+    rotor_force += root.force_N;
+    rotor_moment += root.moment_N_m + (root.point_m - top).cross(root.force_N);
+  }
+  yaw.head<3>() += rotor_force;
+  yaw.tail<3>() += rotor_moment;
+
+  // Tower base: the tower (+ yaw-bearing mass) and the yaw-bearing load carried down.
+  const Vec3& base = k.tower_base.position_m;
+  Vec6 tower = Vec6::Zero();
+  add_body(model.tower.mass_kg, model.tower.inertia_kg_m2, k.tower_cm, k.base, udot, gravity, base, tower);
+  tower.head<3>() += yaw.head<3>();
+  tower.tail<3>() += yaw.tail<3>() + (top - base).cross(yaw.head<3>());
+
+  // Frames t (tower base) and p (yaw bearing) are parallel to b for a rigid tower.
+  out.tower_base_loads << t_gb.transpose() * tower.head<3>(), t_gb.transpose() * tower.tail<3>();
+  out.yaw_bearing_loads << t_gb.transpose() * yaw.head<3>(), t_gb.transpose() * yaw.tail<3>();
+
+  for (int i = 0; i < model.blade_count; ++i) {
+    out.blade_root[i] = frame_motion(k.blade_root[i], k.rotor, k.blade_root_orientation[i], udot);
+  }
+  out.hub = frame_motion(k.apex, k.rotor, k.rotor.orientation, udot);
+
+  // Channels, in the order of channels().
+  auto& c = out.channels;
+  int n = 0;
+  auto put3 = [&](const Vec3& v, double scale) {
+    for (int i = 0; i < 3; ++i) c[n++] = scale * v[i];
+  };
+  put3(state.position_m, 1.0);                                       // PtfmSurge, Sway, Heave
+  put3(out.platform_angles_rad, kRadToDeg);                          // PtfmRoll, Pitch, Yaw
+  put3(state.velocity_m_s, 1.0);                                     // PtfmTVxi …
+  put3(k.base.angular_velocity_rad_s, kRadToDeg);                    // PtfmRVxi …
+  put3(out.platform_acceleration_m_s2, 1.0);                         // PtfmTAxi …
+  put3(out.platform_angular_acceleration_rad_s2, kRadToDeg);         // PtfmRAxi …
+  const double two_pi = 2.0 * std::numbers::pi;
+  c[n++] = kRadToDeg * (state.rotor_azimuth_rad - two_pi * std::floor(state.rotor_azimuth_rad / two_pi));  // Azimuth
+  c[n++] = kRadSToRpm * state.rotor_speed_rad_s;                                      // RotSpeed
+  c[n++] = kRadSToRpm * model.gearbox_ratio *
+           (model.dof_count > kGenerator ? state.generator_speed_rad_s : state.rotor_speed_rad_s);  // GenSpeed
+  c[n++] = kRadToDeg * udot[kRotor];                                                  // RotAccel
+  c[n++] = kRadToDeg * state.nacelle_yaw_rad;                                         // NacYaw
+  c[n++] = kRadToDeg * (model.dof_count > kGenerator
+                            ? state.rotor_azimuth_rad - state.generator_azimuth_rad : 0.0);  // DrTrTwst
+  put3(t_gb.transpose() * acceleration(k.tower_top, udot), 1.0);                       // YawBrTAxp …
+  put3(k.shaft.orientation.transpose() * acceleration(k.imu, udot), 1.0);              // NcIMUTAxs …
+  put3(out.tower_base_loads.head<3>(), 1e-3);                                         // TwrBsFxt … (kN)
+  put3(out.tower_base_loads.tail<3>(), 1e-3);                                         // TwrBsMxt … (kN·m)
+  put3(out.yaw_bearing_loads.head<3>(), 1e-3);                                        // YawBrFxp …
+  put3(out.yaw_bearing_loads.tail<3>(), 1e-3);                                        // YawBrMxp …
+  return out;
+}
+
+std::vector<ChannelInfo> Multibody::channels(const Model&) {
+  const char* m = "multibody";
+  std::vector<ChannelInfo> c;
+  auto add = [&](const char* name, const char* unit, const char* description) {
+    c.push_back({name, unit, description, m});
+  };
+  add("PtfmSurge", "m", "platform reference point x, inertial frame");
+  add("PtfmSway", "m", "platform reference point y, inertial frame");
+  add("PtfmHeave", "m", "platform reference point z, inertial frame");
+  add("PtfmRoll", "deg", "platform Euler 1-2-3 angle 1 (about x)");
+  add("PtfmPitch", "deg", "platform Euler 1-2-3 angle 2 (about y'), in [-90, 90]");
+  add("PtfmYaw", "deg", "platform Euler 1-2-3 angle 3 (about z'')");
+  add("PtfmTVxi", "m/s", "platform reference point velocity, xi");
+  add("PtfmTVyi", "m/s", "platform reference point velocity, yi");
+  add("PtfmTVzi", "m/s", "platform reference point velocity, zi");
+  add("PtfmRVxi", "deg/s", "platform angular velocity, xi component");
+  add("PtfmRVyi", "deg/s", "platform angular velocity, yi component");
+  add("PtfmRVzi", "deg/s", "platform angular velocity, zi component");
+  add("PtfmTAxi", "m/s^2", "platform reference point acceleration, xi");
+  add("PtfmTAyi", "m/s^2", "platform reference point acceleration, yi");
+  add("PtfmTAzi", "m/s^2", "platform reference point acceleration, zi");
+  add("PtfmRAxi", "deg/s^2", "platform angular acceleration, xi component");
+  add("PtfmRAyi", "deg/s^2", "platform angular acceleration, yi component");
+  add("PtfmRAzi", "deg/s^2", "platform angular acceleration, zi component");
+  add("Azimuth", "deg", "rotor azimuth, blade 1 up at 0, positive about the downwind shaft axis, [0, 360)");
+  add("RotSpeed", "rpm", "rotor (LSS) speed relative to the nacelle");
+  add("GenSpeed", "rpm", "generator (HSS) speed relative to the nacelle");
+  add("RotAccel", "deg/s^2", "rotor (LSS) angular acceleration relative to the nacelle");
+  add("NacYaw", "deg", "nacelle yaw angle about the tower axis");
+  add("DrTrTwst", "deg", "drivetrain torsional twist, rotor minus generator (LSS side)");
+  add("YawBrTAxp", "m/s^2", "tower-top acceleration (absolute, no gravity), xp");
+  add("YawBrTAyp", "m/s^2", "tower-top acceleration (absolute, no gravity), yp");
+  add("YawBrTAzp", "m/s^2", "tower-top acceleration (absolute, no gravity), zp");
+  add("NcIMUTAxs", "m/s^2", "nacelle IMU acceleration (absolute, no gravity), xs (along the shaft, downwind)");
+  add("NcIMUTAys", "m/s^2", "nacelle IMU acceleration (absolute, no gravity), ys");
+  add("NcIMUTAzs", "m/s^2", "nacelle IMU acceleration (absolute, no gravity), zs");
+  add("TwrBsFxt", "kN", "tower-base fore-aft shear force (load of the tower on its base), xt");
+  add("TwrBsFyt", "kN", "tower-base side-to-side shear force, yt");
+  add("TwrBsFzt", "kN", "tower-base axial force, zt (negative = compression by the weight)");
+  add("TwrBsMxt", "kN-m", "tower-base roll (side-to-side) moment, about xt");
+  add("TwrBsMyt", "kN-m", "tower-base pitch (fore-aft) moment, about yt");
+  add("TwrBsMzt", "kN-m", "tower-base yaw (torsional) moment, about zt");
+  add("YawBrFxp", "kN", "yaw-bearing fore-aft shear force (load of nacelle+rotor on the tower top), xp");
+  add("YawBrFyp", "kN", "yaw-bearing side-to-side shear force, yp");
+  add("YawBrFzp", "kN", "yaw-bearing axial force, zp");
+  add("YawBrMxp", "kN-m", "yaw-bearing roll moment, about xp");
+  add("YawBrMyp", "kN-m", "yaw-bearing pitch moment, about yp");
+  add("YawBrMzp", "kN-m", "yaw-bearing yaw moment, about zp");
+  return c;
+}
+
+}  // namespace fowtsim::multibody

@@ -1,0 +1,50 @@
+// advance() and outputs() must not touch the heap (brief: "no heap allocation in the step").
+#include <catch2/catch.hpp>
+
+#include "fowtsim/testing/allocation_counter.hpp"
+
+#include "fowtsim/multibody/multibody.hpp"
+#include "fowtsim/multibody/oc3.hpp"
+#include "test_support.hpp"
+
+using fowtsim::testing::allocations;
+using fowtsim::testing::counting;
+using namespace fowtsim;
+using namespace fowtsim::multibody;
+
+namespace {
+class SpringProvider : public LoadProvider {
+ public:
+  void loads(double, const State& s, AppliedLoads& out) override {
+    out.platform_force_N = -41180.0 * s.position_m;
+    out.platform_added_mass.diagonal().setConstant(1.0e6);
+    out.generator_torque_N_m = 4.0e4;
+  }
+  YawMotion nacelle_yaw(double t) override { return {0.01 * t, 0.01, 0.0}; }
+};
+}  // namespace
+
+TEST_CASE("a multibody step and its outputs allocate nothing", "[unit][multibody]") {
+  Params p = oc3_hywind_params();
+  p.nacelle.yaw_prescribed = true;
+  p.initial_conditions.rotor_speed_rpm = 12.1;
+  const Model model = make_model(p);
+  State s = Multibody::make_state(model);
+  SpringProvider provider;
+  AppliedLoads loads;
+  allocations = 0;
+  counting = true;
+  double sink = 0.0;
+  for (int k = 0; k < 50; ++k) {
+    Multibody::advance(model, provider, k * 0.05, 0.05, s);
+    sink += Multibody::outputs(model, loads, s).channels[0];
+  }
+  counting = false;
+  CHECK(allocations == 0);
+  CHECK(std::isfinite(sink));
+}
+
+TEST_CASE("channels() and the Output channel array agree in size", "[unit][multibody]") {
+  const Model model = make_model(oc3_hywind_params());
+  CHECK(Multibody::channels(model).size() == static_cast<std::size_t>(kChannelCount));
+}

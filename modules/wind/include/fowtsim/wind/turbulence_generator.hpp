@@ -1,0 +1,50 @@
+#pragma once
+// Our turbulence generator: IEC 61400-1 ed. 3 Kaimal spectra for u, v, w (Annex B, eq. B.1), the
+// IEC exponential coherence for u (eq. B.2), v and w uncorrelated between points (as TurbSim's IEC
+// Kaimal model), NTM or ETM sigma (§6.3.1.3, §6.3.2.3), power-law mean profile, by Veers' method
+// (Veers 1988, SAND88-0152): per frequency, correlated unit-phasor amplitudes (CoherentSampler),
+// then one real inverse FFT per point and component (FFTW, c2r).
+//
+//   u_j(t) = U(z_j) + Re Σ_m sqrt(2 S_u(f_m) Δf) X_j(f_m) e^{i 2π f_m t},  f_m = m / T, m = 1..⌈N/2⌉−1
+//
+// with T = duration, N = T/dt samples, E|X_j|² = 1 and E[X_j X_k*] = Coh_u(r_jk, f_m); the field is
+// periodic with period T (stored as a periodic full field, TurbSim format id 8). The mean (m = 0) and
+// the Nyquist term are zero, so the expected variance is Σ_m S(f_m) Δf, slightly below sigma² of the
+// continuous spectrum (TurbStats::expected_sigma_m_s vs iec_sigma_m_s).
+//
+// Random numbers: std::mt19937_64(seed); a phase is θ = 2π (g() >> 11)·2⁻⁵³ (our own uniform
+// conversion, so the field is bit-identical on every platform with the same libm). Draw order:
+// component u, v, w; frequency m ascending; then the sampler's draws (u) or points j ascending (v, w).
+#include <cstdint>
+#include <random>
+
+#include "fowtsim/wind/full_field.hpp"
+#include "fowtsim/wind/params.hpp"
+
+namespace fowtsim::wind {
+
+// Uniform double in [0, 1) from the top 53 bits of one 64-bit draw.
+inline double uniform01(std::mt19937_64& generator) {
+  return static_cast<double>(generator() >> 11) * 0x1.0p-53;
+}
+
+struct TurbulenceStats {
+  double iec_sigma_m_s[3] = {0, 0, 0};       // sigma_k of IEC: sigma_1, 0.8 sigma_1, 0.5 sigma_1 [m/s]
+  double expected_sigma_m_s[3] = {0, 0, 0};  // sqrt(Σ_m S_k(f_m) Δf) of the discrete record [m/s]
+  int frequencies = 0;                       // positive frequencies carried [-]
+  int independent_frequencies = 0;           // u frequencies with coherence dropped (< 1e-4)
+  int embedding_frequencies = 0;             // u frequencies by circulant embedding (exact)
+  int dense_frequencies = 0;                 // u frequencies by dense Cholesky (exact)
+  double max_dropped_coherence = 0.0;        // largest coherence replaced by 0 [-]
+};
+
+struct GeneratedTurbulence {
+  FullField field;        // periodic grid centred on (y = 0, z = reference_height_m), no tower points
+  TurbulenceStats stats;
+};
+
+// params.model must be turbulent (validated). Memory: the field (nt·ny·nz·3 float) plus one
+// spectrum buffer (ny·nz·(nt/2+1) complex double) reused for the three components.
+GeneratedTurbulence generate_turbulence(const WindParams& params);
+
+}  // namespace fowtsim::wind

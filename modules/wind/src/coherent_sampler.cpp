@@ -1,0 +1,147 @@
+#include "fowtsim/wind/coherent_sampler.hpp"
+
+#include <fftw3.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "fowtsim/core/error.hpp"
+
+namespace fowtsim::wind {
+namespace {
+
+// Smallest m >= n whose prime factors are 2, 3 and 5 (fast FFTW sizes).
+int fft_friendly(int n) {
+  for (int m = std::max(n, 1);; ++m) {
+    int r = m;
+    for (int p : {2, 3, 5}) while (r % p == 0) r /= p;
+    if (r == 1) return m;
+  }
+}
+
+}  // namespace
+
+struct CoherentSampler::Impl {
+  int ny, nz;
+  double dy, dz;
+  int my, mz;                       // embedding sizes
+  fftw_complex* buffer = nullptr;   // My·Mz, z slow
+  fftw_plan plan = nullptr;         // forward 2-D DFT in place, FFTW_ESTIMATE: same algorithm every run
+  std::vector<double> root_lambda;  // sqrt(λ / (My Mz)) of the prepared embedding
+  Eigen::MatrixXcd cholesky;        // L of the prepared dense case (real, kept complex for the product)
+  Method method = Method::independent;
+  double max_dropped = 0.0;
+
+  double distance(int diy, int diz) const { return std::hypot(diy * dy, diz * dz); }
+};
+
+CoherentSampler::CoherentSampler(int ny, int nz, double dy_m, double dz_m) : impl_(std::make_unique<Impl>()) {
+  Impl& s = *impl_;
+  s.ny = ny;
+  s.nz = nz;
+  s.dy = dy_m;
+  s.dz = dz_m;
+  s.my = fft_friendly(2 * (ny - 1));
+  s.mz = fft_friendly(2 * (nz - 1));
+  s.buffer = fftw_alloc_complex(static_cast<std::size_t>(s.my) * s.mz);
+  if (s.buffer == nullptr) throw std::bad_alloc();
+  s.plan = fftw_plan_dft_2d(s.mz, s.my, s.buffer, s.buffer, FFTW_FORWARD, FFTW_ESTIMATE);
+  s.root_lambda.assign(static_cast<std::size_t>(s.my) * s.mz, 0.0);
+}
+
+CoherentSampler::~CoherentSampler() {
+  if (impl_->plan) fftw_destroy_plan(impl_->plan);
+  if (impl_->buffer) fftw_free(impl_->buffer);
+}
+
+std::size_t CoherentSampler::point_count() const { return static_cast<std::size_t>(impl_->ny) * impl_->nz; }
+std::size_t CoherentSampler::embedding_size() const { return static_cast<std::size_t>(impl_->my) * impl_->mz; }
+double CoherentSampler::max_dropped_coherence() const { return impl_->max_dropped; }
+
+CoherentSampler::Method CoherentSampler::prepare(double a) {
+  Impl& s = *impl_;
+  const double nearest = std::exp(-a * std::min(s.dy, s.dz));
+  if (nearest < independence_threshold) {
+    s.max_dropped = std::max(s.max_dropped, nearest);
+    return s.method = Method::independent;
+  }
+  // First row of the block-circulant embedding (periodic distances), then its eigenvalues.
+  for (int iz = 0; iz < s.mz; ++iz) {
+    const int diz = std::min(iz, s.mz - iz);
+    for (int iy = 0; iy < s.my; ++iy) {
+      const int diy = std::min(iy, s.my - iy);
+      fftw_complex& b = s.buffer[static_cast<std::size_t>(iz) * s.my + iy];
+      b[0] = std::exp(-a * s.distance(diy, diz));
+      b[1] = 0.0;
+    }
+  }
+  fftw_execute(s.plan);
+  const std::size_t m = embedding_size();
+  double lambda_max = 0.0, lambda_min = 0.0;
+  for (std::size_t k = 0; k < m; ++k) {
+    lambda_max = std::max(lambda_max, s.buffer[k][0]);
+    lambda_min = std::min(lambda_min, s.buffer[k][0]);
+  }
+  // Negative eigenvalues beyond round-off: the embedding is not a covariance; use the dense way.
+  if (lambda_min >= -1e-12 * lambda_max) {
+    for (std::size_t k = 0; k < m; ++k)
+      s.root_lambda[k] = std::sqrt(std::max(s.buffer[k][0], 0.0) / static_cast<double>(m));
+    return s.method = Method::embedding;
+  }
+  const int n = static_cast<int>(point_count());
+  Eigen::MatrixXd c(n, n);
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k <= j; ++k)
+      c(j, k) = c(k, j) = std::exp(-a * s.distance(j % s.ny - k % s.ny, j / s.ny - k / s.ny));
+  Eigen::LLT<Eigen::MatrixXd> llt(c);
+  if (llt.info() != Eigen::Success)
+    throw NumericalError(ErrorContext{"wind.turbulence", std::nullopt, "coherence matrix",
+                                      "check grid spacing and mean wind speed"},
+                         "Cholesky factorisation of the u-coherence matrix failed");
+  s.cholesky = llt.matrixL().toDenseMatrix().cast<std::complex<double>>();
+  return s.method = Method::dense;
+}
+
+std::size_t CoherentSampler::draws() const {
+  return impl_->method == Method::embedding ? embedding_size() : point_count();
+}
+
+void CoherentSampler::sample(std::span<const std::complex<double>> xi, std::span<std::complex<double>> out) {
+  Impl& s = *impl_;
+  const std::size_t n = point_count();
+  if (xi.size() != draws() || out.size() != n)
+    throw InputError(ErrorContext{"wind.turbulence", std::nullopt, "xi/out", ""},
+                     "CoherentSampler::sample: xi.size() != draws() or out.size() != point_count()");
+  switch (s.method) {
+    case Method::independent:
+      std::copy(xi.begin(), xi.end(), out.begin());
+      return;
+    case Method::embedding: {
+      for (std::size_t k = 0; k < embedding_size(); ++k) {
+        s.buffer[k][0] = s.root_lambda[k] * xi[k].real();
+        s.buffer[k][1] = s.root_lambda[k] * xi[k].imag();
+      }
+      fftw_execute(s.plan);
+      for (int iz = 0; iz < s.nz; ++iz)
+        for (int iy = 0; iy < s.ny; ++iy) {
+          const fftw_complex& b = s.buffer[static_cast<std::size_t>(iz) * s.my + iy];
+          out[static_cast<std::size_t>(iz) * s.ny + iy] = {b[0], b[1]};
+        }
+      return;
+    }
+    case Method::dense: {
+      // X = L ξ, L lower triangular.
+      for (std::size_t j = 0; j < n; ++j) {
+        std::complex<double> sum = 0.0;
+        for (std::size_t k = 0; k <= j; ++k) sum += s.cholesky(j, k) * xi[k];
+        out[j] = sum;
+      }
+      return;
+    }
+  }
+}
+
+}  // namespace fowtsim::wind

@@ -1,0 +1,147 @@
+#include "fowtsim/wind/turbulence_generator.hpp"
+
+#include <fftw3.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <vector>
+
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/wind/coherent_sampler.hpp"
+#include "fowtsim/wind/iec_turbulence.hpp"
+
+namespace fowtsim::wind {
+namespace {
+
+using Complex = std::complex<double>;
+
+Complex random_phasor(std::mt19937_64& generator) {
+  const double theta = 2.0 * std::numbers::pi * uniform01(generator);
+  return {std::cos(theta), std::sin(theta)};
+}
+
+// One real inverse DFT of length n with its own aligned buffers (FFTW_ESTIMATE: deterministic).
+class InverseRealFft {
+ public:
+  explicit InverseRealFft(int n) : n_(n) {
+    spectrum_ = fftw_alloc_complex(static_cast<std::size_t>(n / 2 + 1));
+    signal_ = fftw_alloc_real(static_cast<std::size_t>(n));
+    if (!spectrum_ || !signal_) throw std::bad_alloc();
+    plan_ = fftw_plan_dft_c2r_1d(n, spectrum_, signal_, FFTW_ESTIMATE);
+  }
+  ~InverseRealFft() {
+    fftw_destroy_plan(plan_);
+    fftw_free(spectrum_);
+    fftw_free(signal_);
+  }
+  InverseRealFft(const InverseRealFft&) = delete;
+  InverseRealFft& operator=(const InverseRealFft&) = delete;
+
+  // signal[t] = Σ_k Y_k e^{+i 2π k t / n} over the Hermitian-extended spectrum (FFTW c2r).
+  const double* run(const Complex* y) {
+    for (int k = 0; k <= n_ / 2; ++k) {
+      spectrum_[k][0] = y[k].real();
+      spectrum_[k][1] = y[k].imag();
+    }
+    fftw_execute(plan_);
+    return signal_;
+  }
+
+ private:
+  int n_;
+  fftw_complex* spectrum_ = nullptr;
+  double* signal_ = nullptr;
+  fftw_plan plan_ = nullptr;
+};
+
+}  // namespace
+
+GeneratedTurbulence generate_turbulence(const WindParams& params) {
+  validate(params);
+  if (params.model != WindModel::turbulent)
+    throw InputError(ErrorContext{"wind.turbulence", std::nullopt, "wind.model", ""},
+                     "generate_turbulence needs wind.model = turbulent");
+  const TurbulenceParams& t = params.turbulence;
+  const double v_hub = params.speed_m_s;
+  const double z_hub = params.reference_height_m;
+  const KaimalModel kaimal = kaimal_model(t, v_hub, z_hub);
+
+  GeneratedTurbulence out;
+  FullField& f = out.field;
+  f.ny = t.ny;
+  f.nz = t.nz;
+  f.n_tower = 0;
+  f.nt = static_cast<int>(std::llround(t.duration_s / t.dt_s));
+  f.dy_m = t.width_m / (t.ny - 1);
+  f.dz_m = t.height_m / (t.nz - 1);
+  f.dt_s = t.dt_s;
+  f.z_hub_m = z_hub;
+  f.z_bottom_m = z_hub - 0.5 * t.height_m;
+  f.u_hub_m_s = v_hub;
+  f.periodic = true;
+  const int n = f.nt;
+  const std::size_t points = static_cast<std::size_t>(f.ny) * f.nz;
+  f.grid.assign(static_cast<std::size_t>(n) * points * 3, 0.0f);
+
+  const int bins = n / 2 + 1;                        // c2r input length
+  const int top = (n % 2 == 0) ? n / 2 - 1 : n / 2;  // last carried frequency index (no Nyquist)
+  const double df = 1.0 / (n * t.dt_s);
+  TurbulenceStats& stats = out.stats;
+  stats.frequencies = top;
+
+  std::mt19937_64 generator(t.seed);
+  CoherentSampler sampler(f.ny, f.nz, f.dy_m, f.dz_m);
+  std::vector<Complex> xi(std::max(sampler.embedding_size(), points));
+  std::vector<Complex> x(points);
+  std::vector<Complex> spectra(points * bins);  // [point][bin]
+  InverseRealFft inverse(n);
+
+  std::vector<double> mean_u(f.nz);  // power-law profile U(z) = V_hub (z / z_hub)^alpha
+  for (int iz = 0; iz < f.nz; ++iz)
+    mean_u[iz] = v_hub * std::pow((f.z_bottom_m + iz * f.dz_m) / z_hub, params.shear_exponent);
+
+  for (int c = 0; c < 3; ++c) {
+    std::fill(spectra.begin(), spectra.end(), Complex(0.0, 0.0));
+    double variance = 0.0;
+    for (int m = 1; m <= top; ++m) {
+      const double fm = m * df;
+      const double s = kaimal.spectrum(c, fm);
+      variance += s * df;
+      // c2r gives Y_0 + 2 Re Σ Y_m e^{iωt}: Y_m = sqrt(2 S Δf) X / 2.
+      const double amplitude = std::sqrt(0.5 * s * df);
+      if (c == 0) {
+        switch (sampler.prepare(kaimal.coherence_decay_per_m(fm))) {
+          case CoherentSampler::Method::independent: ++stats.independent_frequencies; break;
+          case CoherentSampler::Method::embedding: ++stats.embedding_frequencies; break;
+          case CoherentSampler::Method::dense: ++stats.dense_frequencies; break;
+        }
+        const std::size_t draws = sampler.draws();
+        for (std::size_t k = 0; k < draws; ++k) xi[k] = random_phasor(generator);
+        sampler.sample(std::span<const Complex>(xi.data(), draws), x);
+      } else {
+        for (std::size_t j = 0; j < points; ++j) x[j] = random_phasor(generator);
+      }
+      for (std::size_t j = 0; j < points; ++j) spectra[j * bins + m] = amplitude * x[j];
+    }
+    stats.iec_sigma_m_s[c] = kaimal.component[c].sigma_m_s;
+    stats.expected_sigma_m_s[c] = std::sqrt(variance);
+
+    for (std::size_t j = 0; j < points; ++j) {
+      const double* series = inverse.run(&spectra[j * bins]);
+      const double mean = (c == 0) ? mean_u[j / f.ny] : 0.0;
+      for (int it = 0; it < n; ++it) {
+        const double value = mean + series[it];
+        f.grid[(static_cast<std::size_t>(it) * points + j) * 3 + c] = static_cast<float>(value);
+      }
+    }
+  }
+  stats.max_dropped_coherence = sampler.max_dropped_coherence();
+  for (float v : f.grid)
+    if (!std::isfinite(v))
+      throw NumericalError(ErrorContext{"wind.turbulence", std::nullopt, "generated field", "check the inputs"},
+                           "non-finite value in the generated turbulence field");
+  return out;
+}
+
+}  // namespace fowtsim::wind

@@ -1,0 +1,217 @@
+// The IEC Kaimal / Veers generator: exactness of the coherent sampler, determinism, and the
+// statistics of generated fields (spectra, turbulence intensity, coherence) against IEC 61400-1.
+#include <catch2/catch.hpp>
+
+#include <fftw3.h>
+
+#include <cmath>
+#include <complex>
+#include <cstring>
+#include <vector>
+
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/wind/coherent_sampler.hpp"
+#include "fowtsim/wind/iec_turbulence.hpp"
+#include "fowtsim/wind/turbulence_generator.hpp"
+
+using namespace fowtsim;
+using namespace fowtsim::wind;
+using Complex = std::complex<double>;
+
+namespace {
+
+// Covariance E[X Xᴴ] realised by the sampler, from unit vectors ξ = e_l: Σ_l X(e_l) X(e_l)ᴴ.
+Eigen::MatrixXcd realised_covariance(CoherentSampler& sampler) {
+  const std::size_t n = sampler.point_count(), draws = sampler.draws();
+  Eigen::MatrixXcd cov = Eigen::MatrixXcd::Zero(n, n);
+  std::vector<Complex> xi(draws), x(n);
+  for (std::size_t l = 0; l < draws; ++l) {
+    std::fill(xi.begin(), xi.end(), Complex(0.0, 0.0));
+    xi[l] = 1.0;
+    sampler.sample(xi, x);
+    const Eigen::Map<Eigen::VectorXcd> v(x.data(), n);
+    cov += v * v.adjoint();
+  }
+  return cov;
+}
+
+double coherence_error(CoherentSampler& sampler, int ny, double dy, double dz, double a) {
+  const Eigen::MatrixXcd cov = realised_covariance(sampler);
+  double worst = 0.0;
+  for (Eigen::Index j = 0; j < cov.rows(); ++j)
+    for (Eigen::Index k = 0; k < cov.cols(); ++k) {
+      const double r = std::hypot((j % ny - k % ny) * dy, (j / ny - k / ny) * dz);
+      worst = std::max(worst, std::abs(cov(j, k) - std::exp(-a * r)));
+    }
+  return worst;
+}
+
+WindParams small_turbulent(std::uint64_t seed) {
+  WindParams p;
+  p.model = WindModel::turbulent;
+  p.speed_m_s = 10.0;
+  p.reference_height_m = 90.0;
+  p.turbulence.category = TurbulenceCategory::A;
+  p.turbulence.ny = 4;
+  p.turbulence.nz = 3;
+  p.turbulence.width_m = 60.0;   // dy = 20 m
+  p.turbulence.height_m = 40.0;  // dz = 20 m
+  p.turbulence.dt_s = 0.25;
+  p.turbulence.duration_s = 600.0;
+  p.turbulence.seed = seed;
+  return p;
+}
+
+// One-sided periodogram P_m = 2 |DFT_m|² dt / N of a real series (m = 0..N/2).
+std::vector<Complex> dft(const std::vector<double>& series) {
+  const int n = static_cast<int>(series.size());
+  std::vector<double> in(series);
+  std::vector<Complex> out(n / 2 + 1);
+  fftw_plan plan = fftw_plan_dft_r2c_1d(n, in.data(), reinterpret_cast<fftw_complex*>(out.data()), FFTW_ESTIMATE);
+  fftw_execute(plan);
+  fftw_destroy_plan(plan);
+  return out;
+}
+
+std::vector<double> series_at(const FullField& f, int iy, int iz, int c) {
+  std::vector<double> s(f.nt);
+  for (int it = 0; it < f.nt; ++it) s[it] = f.grid[((static_cast<std::size_t>(it) * f.nz + iz) * f.ny + iy) * 3 + c];
+  return s;
+}
+
+}  // namespace
+
+// Intent: every way of the sampler realises the IEC coherence matrix: embedding and dense exactly
+// (to round-off, tolerance 1e-12), the independent switch only where all coherences are < 1e-4.
+TEST_CASE("the coherent sampler realises the IEC coherence matrix", "[verification][wind][turbulence]") {
+  const int ny = 6, nz = 5;
+  const double dy = 4.0, dz = 5.0;
+  CoherentSampler sampler(ny, nz, dy, dz);
+  CHECK(sampler.prepare(0.5) == CoherentSampler::Method::embedding);
+  CHECK(coherence_error(sampler, ny, dy, dz, 0.5) < 1e-12);  // exact up to FFT round-off
+  CHECK(sampler.prepare(0.002) == CoherentSampler::Method::dense);  // embedding indefinite at long range
+  CHECK(coherence_error(sampler, ny, dy, dz, 0.002) < 1e-12);
+  CHECK(sampler.prepare(2.5) == CoherentSampler::Method::independent);  // exp(−2.5·4) = 4.5e-5 < 1e-4
+  CHECK(coherence_error(sampler, ny, dy, dz, 2.5) < CoherentSampler::independence_threshold);
+  CHECK(sampler.max_dropped_coherence() == Approx(std::exp(-10.0)).epsilon(1e-12));
+}
+
+// Intent: IEC sigma_1: NTM class B at 12 m/s = 0.14 (0.75·12 + 5.6) = 2.044 m/s, as TurbSim's summary
+// for the OC3 field prints ("Characteristic value of standard deviation = 2.044 m/s", 4 digits);
+// ETM class I B at 12 m/s: 2·0.14·(0.072·(10/2 + 3)(12/2 − 4) + 10) = 3.12256 m/s (IEC eq. 19).
+TEST_CASE("IEC NTM and ETM standard deviations", "[verification][wind][turbulence]") {
+  TurbulenceParams t;
+  t.category = TurbulenceCategory::B;
+  CHECK(longitudinal_sigma(t, 12.0) == Approx(2.044).margin(5e-4));
+  t.model = TurbulenceModel::ETM;
+  t.iec_wind_class = 1;
+  CHECK(longitudinal_sigma(t, 12.0) == Approx(3.12256).epsilon(1e-12));
+  const KaimalModel k = kaimal_model(TurbulenceParams{}, 12.0, 90.0);
+  CHECK(k.component[0].length_scale_m == Approx(340.2));  // 8.1 Λ1, Λ1 = 42 m above 60 m
+  CHECK(k.component[2].sigma_m_s == Approx(0.5 * 2.044).epsilon(1e-12));
+}
+
+// Intent: same seed → bit-identical field (DESIGN.md §7); another seed → another field.
+TEST_CASE("the generator is deterministic per seed", "[unit][wind][turbulence]") {
+  const GeneratedTurbulence a = generate_turbulence(small_turbulent(7));
+  const GeneratedTurbulence b = generate_turbulence(small_turbulent(7));
+  const GeneratedTurbulence c = generate_turbulence(small_turbulent(8));
+  REQUIRE(a.field.grid.size() == b.field.grid.size());
+  CHECK(std::memcmp(a.field.grid.data(), b.field.grid.data(), a.field.grid.size() * sizeof(float)) == 0);
+  CHECK(std::memcmp(a.field.grid.data(), c.field.grid.data(), a.field.grid.size() * sizeof(float)) != 0);
+  CHECK(a.field.periodic);
+  CHECK(a.stats.dense_frequencies + a.stats.embedding_frequencies + a.stats.independent_frequencies ==
+        a.stats.frequencies);
+}
+
+// Intent: one-point spectra of u, v, w averaged over octave bands within ±10 % of the IEC Kaimal
+// target (issue 4); turbulence intensity (sigma over seeds and points) within 3 % of the record's
+// target sigma = sqrt(Σ S(f_m) Δf) (issue 4; the IEC sigma itself is larger: the record carries no
+// variance below 1/T or above the Nyquist frequency, as TurbSim without ScaleIEC); co-coherence of
+// u at r = 20 m and 40 m against the IEC model, per octave band, within 4 standard deviations of
+// the estimate, (1 − γ²)/sqrt(2K) for K independent samples (Bendat & Piersol, Random Data, 4th ed.,
+// §9.2.3: random error of coherence estimates). 240 seeds of a 4×3 grid (20 m spacing), 600 s at
+// 4 Hz: spectra from 4/T = 0.0067 Hz up.
+TEST_CASE("generated fields have the IEC Kaimal spectra, intensity and coherence",
+          "[verification][wind][turbulence]") {
+  const int seeds = 240;
+  const WindParams p0 = small_turbulent(1);
+  const KaimalModel kaimal = kaimal_model(p0.turbulence, p0.speed_m_s, p0.reference_height_m);
+  const int n = static_cast<int>(std::llround(p0.turbulence.duration_s / p0.turbulence.dt_s));
+  const double dt = p0.turbulence.dt_s, df = 1.0 / (n * dt);
+  const int top = n / 2 - 1;
+  // Octave bands of bins [b, 2b) for b = 4, 8, …, and the remainder up to `top`.
+  std::vector<int> band_start;
+  for (int b = 4; b <= top; b *= 2) band_start.push_back(b);
+  const std::size_t bands = band_start.size();
+  auto band_end = [&](std::size_t i) { return std::min(2 * band_start[i], top + 1); };
+
+  std::vector<double> measured[3], variance_sum(3, 0.0);
+  for (auto& m : measured) m.assign(bands, 0.0);
+  // Coherence accumulators for the u pairs (iy 0–1, 20 m) and (iy 0–2, 40 m) at iz = 1.
+  const int pair_far[2] = {1, 2};
+  std::vector<double> cross[2], auto_a[2], auto_b[2];
+  for (int q = 0; q < 2; ++q) cross[q].assign(bands, 0.0), auto_a[q].assign(bands, 0.0), auto_b[q].assign(bands, 0.0);
+  double expected_sigma[3] = {0, 0, 0};
+  int series = 0;
+  for (int seed = 1; seed <= seeds; ++seed) {
+    const GeneratedTurbulence g = generate_turbulence(small_turbulent(static_cast<std::uint64_t>(seed)));
+    for (int c = 0; c < 3; ++c) expected_sigma[c] = g.stats.expected_sigma_m_s[c];
+    const FullField& f = g.field;
+    for (int c = 0; c < 3; ++c)
+      for (int iz = 0; iz < f.nz; ++iz)
+        for (int iy = 0; iy < f.ny; ++iy) {
+          std::vector<double> s = series_at(f, iy, iz, c);
+          double mean = 0.0;
+          for (double v : s) mean += v / n;
+          double var = 0.0;
+          for (double& v : s) v -= mean, var += v * v / n;
+          variance_sum[c] += var;
+          if (c == 0) ++series;
+          const std::vector<Complex> x = dft(s);
+          for (std::size_t i = 0; i < bands; ++i)
+            for (int m = band_start[i]; m < band_end(i); ++m) measured[c][i] += 2.0 * std::norm(x[m]) * dt / n;
+        }
+    for (int q = 0; q < 2; ++q) {
+      const std::vector<Complex> xa = dft(series_at(f, 0, 1, 0)), xb = dft(series_at(f, pair_far[q], 1, 0));
+      for (std::size_t i = 0; i < bands; ++i)
+        for (int m = band_start[i]; m < band_end(i); ++m) {
+          cross[q][i] += (xa[m] * std::conj(xb[m])).real();
+          auto_a[q][i] += std::norm(xa[m]);
+          auto_b[q][i] += std::norm(xb[m]);
+        }
+    }
+  }
+  const char* names[3] = {"u", "v", "w"};
+  for (int c = 0; c < 3; ++c) {
+    for (std::size_t i = 0; i < bands; ++i) {
+      double target = 0.0;
+      for (int m = band_start[i]; m < band_end(i); ++m) target += kaimal.spectrum(c, m * df);
+      const double ratio = measured[c][i] / (series * target);
+      INFO(names[c] << " band from " << band_start[i] * df << " Hz: measured/target " << ratio);
+      CHECK(std::abs(ratio - 1.0) < 0.10);  // ±10 % (issue 4)
+    }
+    const double sigma = std::sqrt(variance_sum[c] / series);
+    INFO(names[c] << ": sigma " << sigma << " m/s, target " << expected_sigma[c] << " m/s, IEC " << kaimal.component[c].sigma_m_s);
+    CHECK(std::abs(sigma / expected_sigma[c] - 1.0) < 0.03);  // 3 % (issue 4)
+  }
+  for (int q = 0; q < 2; ++q) {
+    const double r = 20.0 * pair_far[q];
+    for (std::size_t i = 0; i < bands; ++i) {
+      // The estimate sums cross- and auto-spectra over the band, so its expectation is the
+      // S_u-weighted band mean of the model: Σ S γ / Σ S.
+      double target = 0.0, weight = 0.0;
+      for (int m = band_start[i]; m < band_end(i); ++m) {
+        target += kaimal.spectrum(0, m * df) * std::exp(-kaimal.coherence_decay_per_m(m * df) * r);
+        weight += kaimal.spectrum(0, m * df);
+      }
+      target /= weight;
+      const double estimate = cross[q][i] / std::sqrt(auto_a[q][i] * auto_b[q][i]);
+      const double samples = static_cast<double>(seeds) * (band_end(i) - band_start[i]);
+      const double tolerance = 4.0 * (1.0 - target * target) / std::sqrt(2.0 * samples);  // 4 sigma, see above
+      INFO("r = " << r << " m, band from " << band_start[i] * df << " Hz: co-coherence " << estimate << " vs IEC "
+                  << target << ", tolerance " << tolerance);
+      CHECK(std::abs(estimate - target) < tolerance);
+    }
+  }
+}
