@@ -15,6 +15,8 @@
 #include "fowtsim/core/version.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "run/run_scene.hpp"
+#include "cli/turbulence_command.hpp"
+#include "decks/wind_deck.hpp"
 #include "scenes/beam_scene.hpp"
 #include "scenes/floating_scene.hpp"
 #include "scenes/platform_scene.hpp"
@@ -107,8 +109,13 @@ int main(int argc, char** argv) {
   verify->add_option("--shared", shared_dir, "directory holding reference/ (default ../shared)");
   std::vector<std::string> bench_cases;
   auto* bench = app.add_subcommand("bench", "benchmark run time against error");
-  bench->add_option("cases", bench_cases, "cases (default all): coupling, beam, hydro, waves");
+  bench->add_option("cases", bench_cases, "cases (default all): coupling, beam, hydro, waves, aero, multibody");
   bench->add_option("--shared", shared_dir, "directory holding reference/ (default ../shared)");
+
+  std::string wind_deck, wind_out;
+  auto* turbulence = app.add_subcommand("turbulence", "generate a turbulent wind field (IEC Kaimal) to .bts and .h5");
+  turbulence->add_option("deck", wind_deck, "deck with a `wind:` section of model turbulent")->required()->check(CLI::ExistingFile);
+  turbulence->add_option("-o,--output", wind_out, "output path without extension (default runs/<deck name>)");
 
   try {
     app.parse(argc, argv);
@@ -118,9 +125,11 @@ int main(int argc, char** argv) {
   if (help_deck) {
     fmt::print("Toy coupled-oscillator scene:\n{}\nBeam scene (a deck with a top-level `beam`):\n{}\n"
                "Platform-loads scene (a deck with a top-level `platform_motion`):\n{}\n"
-               "Floating-turbine scene (a deck with a top-level `structure`):\n{}",
+               "Floating-turbine scene (a deck with a top-level `structure`):\n{}\n"
+               "Turbulence deck (`fowtsim turbulence DECK`):\n{}",
                io::describe_schema(scene_schema()), io::describe_schema(beam_scene_schema()),
-               io::describe_schema(platform_scene_schema()), io::describe_schema(floating_scene_schema()));
+               io::describe_schema(platform_scene_schema()), io::describe_schema(floating_scene_schema()),
+               io::describe_schema(io::Schema::map({{"wind", wind_schema()}})));
     return 0;
   }
   if (app.get_subcommands().empty()) {
@@ -140,6 +149,7 @@ int main(int argc, char** argv) {
       return compare_command(ref, test, channels, rtol_opt->count() ? std::optional(rtol) : std::nullopt,
                              atol_opt->count() ? std::optional(atol) : std::nullopt, tolerance_file);
     }
+    if (*turbulence) return run_turbulence_command(wind_deck, wind_out.empty() ? std::nullopt : std::optional<std::filesystem::path>(wind_out), stdout);
     set_shared_dir(shared_dir);
     if (*verify) return verify_command(cases);
     if (*bench) return bench_command(bench_cases);

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/format.h>
 
@@ -17,6 +18,8 @@ std::vector<VerificationRow> verify_beam_timestep(std::FILE* out);
 std::vector<VerificationRow> verify_beam_beamdyn(std::FILE* out);
 std::vector<VerificationRow> verify_beam_frequencies(std::FILE* out);
 void bench_beam(std::FILE* out);
+void bench_aero(std::FILE* out);       // bench_turbine.cpp
+void bench_multibody(std::FILE* out);
 std::vector<VerificationRow> verify_sea(std::FILE* out);  // verify_sea.cpp
 void bench_hydro(std::FILE* out);
 void bench_waves(std::FILE* out);
@@ -38,7 +41,15 @@ std::vector<VerificationRow> run_verification_case(const std::string& name, std:
   throw InputError({"verify", {}, name, "known cases: " + known}, fmt::format("unknown verification case '{}'", name));
 }
 
-std::vector<std::string> benchmark_case_names() { return {"coupling", "beam", "hydro", "waves"}; }
+std::vector<std::string> benchmark_case_names() { return {"coupling", "beam", "hydro", "waves", "aero", "multibody"}; }
+
+// A shipped input deck: inputs/<relative> under the working directory when run from the source
+// tree, else the source tree this binary was built from.
+std::filesystem::path source_input(const std::string& relative) {
+  const std::filesystem::path local = std::filesystem::path("inputs") / relative;
+  if (std::filesystem::exists(local)) return local;
+  return std::filesystem::path(FOWTSIM_INPUTS_DIR) / relative;
+}
 
 // Wall time against error for each coupling mode over 200 s of the toy problem. Times are from
 // this one run on this machine; compare them as ratios.
@@ -46,8 +57,10 @@ void run_benchmark_case(const std::string& name, std::FILE* out) {
   if (name == "beam") return bench_beam(out);
   if (name == "hydro") return bench_hydro(out);
   if (name == "waves") return bench_waves(out);
+  if (name == "aero") return bench_aero(out);
+  if (name == "multibody") return bench_multibody(out);
   if (name != "coupling") {
-    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves"}, fmt::format("unknown benchmark case '{}'", name));
+    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody"}, fmt::format("unknown benchmark case '{}'", name));
   }
   const ToyProblem problem = study_problem();
   constexpr double kTmax = 200.0;

@@ -1,0 +1,57 @@
+// The turbine decks the driver reads for issue 4: the NREL 5MW aero deck maps onto aero::Params,
+// bad aero rows stop with file:line, and `fowtsim turbulence` writes a .bts the io reader reads
+// back, deterministically.
+#include <fstream>
+
+#include <catch2/catch.hpp>
+
+#include "cli/turbulence_command.hpp"
+#include "decks/aero_deck.hpp"
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/io/turbsim_bts.hpp"
+#include "fowtsim/testing/skip.hpp"
+
+using namespace fowtsim;
+using namespace fowtsim::driver;
+
+namespace {
+io::Schema aero_deck_schema() { return io::Schema::map({{"aero", aero_schema()}, {"airfoils", airfoils_schema()}}); }
+}  // namespace
+
+TEST_CASE("the NREL 5MW aero deck reads into the aero parameters", "[unit][decks]") {
+  const aero::Params p = aero_params(io::read_deck(aero_deck_schema(), testing::source_dir() / "inputs/nrel5mw/aero.yaml"));
+  // AeroDyn blade file of the 5MW baseline: 19 nodes, 8 airfoils, tip at BlSpn 61.4999 m, tip
+  // chord 1.419 m, root twist 13.308°.
+  CHECK(p.blade.size() == 19);
+  CHECK(p.airfoils.size() == 8);
+  CHECK(p.blade.back().span_m == 61.4999);
+  CHECK(p.blade.back().chord_m == 1.419);
+  CHECK(p.blade.front().twist_rad == Approx(13.308 * 3.14159265358979323846 / 180.0).epsilon(1e-15));
+  CHECK(p.airfoils[static_cast<std::size_t>(p.blade.back().airfoil)].name() == "NACA64_A17");
+}
+
+TEST_CASE("an aero blade row naming an unknown airfoil stops with file and line", "[unit][decks]") {
+  const auto dir = testing::scratch_dir("aero_deck_bad");
+  const auto deck = dir / "aero.yaml";
+  std::ofstream(deck) << "airfoils:\n  - {name: flat, polar: [[-180, 0, 0.01, 0], [180, 0, 0.01, 0]]}\n"
+                         "aero:\n  blade:\n    nodes:\n      - [0, 0, 0, 0, 0, 1, flat]\n      - [10, 0, 0, 0, 0, 1, round]\n";
+  CHECK_THROWS_WITH(aero_params(io::read_deck(aero_deck_schema(), deck)),
+                    Catch::Contains("aero.yaml:7") && Catch::Contains("unknown airfoil 'round'"));
+}
+
+TEST_CASE("fowtsim turbulence writes a .bts that reads back, the same for the same seed", "[unit][decks]") {
+  const auto dir = testing::scratch_dir("turbulence_command");
+  const auto deck = dir / "wind.yaml";
+  std::ofstream(deck) << "wind:\n  model: turbulent\n  speed_m_s: 10\n  reference_height_m: 90\n"
+                         "  turbulence: {ny: 5, nz: 4, width_m: 40, height_m: 30, dt_s: 0.25, duration_s: 64, seed: 3}\n";
+  std::FILE* sink = std::tmpfile();
+  REQUIRE(run_turbulence_command(deck, dir / "a", sink) == 0);
+  REQUIRE(run_turbulence_command(deck, dir / "b", sink) == 0);
+  std::fclose(sink);
+  const io::TurbSimField a = io::read_turbsim_bts(dir / "a.bts"), b = io::read_turbsim_bts(dir / "b.bts");
+  CHECK(a.ny == 5);
+  CHECK(a.nz == 4);
+  CHECK(a.nt == 256);  // 64 s at 0.25 s, periodic
+  CHECK(a.grid == b.grid);
+  CHECK(std::filesystem::exists(dir / "a.h5"));
+}
