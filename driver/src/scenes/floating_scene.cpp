@@ -1,14 +1,22 @@
 #include "scenes/floating_scene.hpp"
 
+#include <array>
+#include <type_traits>
+#include <variant>
+
+#include "decks/aero_deck.hpp"
+#include "decks/controller_deck.hpp"
 #include "decks/deck_helpers.hpp"
 #include "decks/hydro_deck.hpp"
 #include "decks/mooring_deck.hpp"
 #include "decks/structure_deck.hpp"
 #include "decks/waves_deck.hpp"
+#include "decks/wind_deck.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/multibody/multibody.hpp"
 #include "run/channel_selection.hpp"
 #include "scenes/scene_runner.hpp"
+#include "scenes/rotor_aero.hpp"
 #include "scenes/sea_modules.hpp"
 
 namespace fowtsim::driver {
@@ -26,22 +34,71 @@ FrameMotion platform_motion(const multibody::State& s) {
   return m;
 }
 
+// The controller of the deck, built-in or external, behind one interface; it runs at the large
+// step (sample and hold) and its demands are held over the step.
+class Controller {
+ public:
+  explicit Controller(ControllerParams params) : params_(std::move(params)) {
+    std::visit([&](const auto& p) { state_ = make_state_of(p); }, params_);
+  }
+  void advance(const control::ControllerInput& u, double t, double dt) {
+    std::visit(
+        [&](const auto& p) {
+          using P = std::decay_t<decltype(p)>;
+          if constexpr (std::is_same_v<P, control::BaselineParams>) {
+            control::BaselineController::advance(p, u, t, dt, std::get<control::BaselineState>(state_));
+            output_ = control::BaselineController::outputs(p, u, std::get<control::BaselineState>(state_));
+          } else {
+            control::ExternalController::advance(p, u, t, dt, std::get<control::ExternalController::State>(state_));
+            output_ = control::ExternalController::outputs(p, u, std::get<control::ExternalController::State>(state_));
+          }
+        },
+        params_);
+  }
+  const control::ControllerOutput& output() const { return output_; }
+
+ private:
+  static control::BaselineState make_state_of(const control::BaselineParams& p) { return control::BaselineController::make_state(p); }
+  static control::ExternalController::State make_state_of(const control::ExternalController::Params& p) {
+    return control::ExternalController::make_state(p);
+  }
+  ControllerParams params_;
+  std::variant<control::BaselineState, control::ExternalController::State> state_;
+  control::ControllerOutput output_{};
+};
+
 // The loads on the structure at any Runge–Kutta stage: the sea (hydro with its added mass, and
-// mooring) at the stage pose. Generator torque stays zero: the rotor is parked or spins freely
-// (no aerodynamics in this scene).
+// mooring) at the stage pose, the rotor aerodynamics at the stage configuration (when the deck has
+// `aero`), and the generator torque and blade pitch held over the large step.
 class StageLoads final : public multibody::LoadProvider {
  public:
-  explicit StageLoads(SeaModules& sea) : sea_(sea) {}
+  StageLoads(const multibody::Model& model, SeaModules& sea, RotorAero* rotor) : model_(model), sea_(sea), rotor_(rotor) {}
+  void hold(double generator_torque_N_m, double pitch_rad) {
+    generator_torque_ = generator_torque_N_m;
+    pitch_ = pitch_rad;
+  }
+  double pitch_rad() const { return pitch_; }
   void loads(double t, const multibody::State& s, multibody::AppliedLoads& out) override {
     sea_.evaluate(t, platform_motion(s));
     const Vec6 load = sea_.platform_load();
     out.platform_force_N += load.head<3>();
     out.platform_moment_N_m += load.tail<3>();
     out.platform_added_mass = sea_.added_mass();
+    out.generator_torque_N_m = generator_torque_;
+    if (rotor_) {
+      multibody::chain_kinematics(model_, s, chain_);
+      rotor_->evaluate(t, chain_, s.rotor_speed_rad_s, pitch_);
+      out.rotor_force_N = rotor_->force_N();
+      out.rotor_moment_N_m = rotor_->moment_N_m();
+    }
   }
 
  private:
+  const multibody::Model& model_;
   SeaModules& sea_;
+  RotorAero* rotor_;
+  multibody::ChainKinematics chain_;
+  double generator_torque_ = 0.0, pitch_ = 0.0;
 };
 
 }  // namespace
@@ -54,6 +111,10 @@ Schema floating_scene_schema() {
       {"waves", waves_schema().optional().doc("incident sea; absent = still water")},
       {"hydro", hydro_schema().optional().doc("Morison strips, hydrostatics, linear extras; absent = none")},
       {"mooring", mooring_schema().optional().doc("mooring lines; absent = none")},
+      {"aero", aero_schema().optional().doc("rotor aerodynamics (with `airfoils` and `wind`); absent = none")},
+      {"airfoils", airfoils_schema().optional().doc("airfoil polars the aero blade rows name")},
+      {"wind", wind_schema().optional().doc("inflow (needed with `aero`)")},
+      {"controller", controller_schema().optional().doc("generator torque and blade pitch; absent = parked, no torque")},
   });
 }
 
@@ -63,20 +124,38 @@ bool is_floating_scene(const std::filesystem::path& deck) {
 
 RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress) {
   const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), request.deck_path);
+  const multibody::Params structure = structure_params(deck.section("structure"));
   const multibody::Model model = [&] {
     try {
-      return multibody::make_model(structure_params(deck.section("structure")));
+      return multibody::make_model(structure);
     } catch (const InputError& e) {
       rethrow_located(deck.section("structure"), e);
     }
   }();
+  if (deck.has("aero") && (!deck.has("airfoils") || !deck.has("wind")))
+    throw InputError({"floating", std::nullopt, "aero", "airfoils and wind sections"},
+                     where(deck, "aero") + ": rotor aerodynamics need the `airfoils` and `wind` sections too");
+  if (deck.has("aero") && structure.rotor.flexible_blades)
+    throw InputError({"floating", std::nullopt, "structure.rotor.flexible_blades", "false"},
+                     where(deck, "structure.rotor.flexible_blades") + ": this scene has rigid blades only (flexible blades: next issue)");
   multibody::State state = multibody::Multibody::make_state(model);
   SeaModules sea(deck, platform_motion(state));
-  StageLoads stage_loads(sea);
+  std::optional<RotorAero> rotor;
+  if (deck.has("aero")) rotor.emplace(deck, structure);
+  std::optional<Controller> controller;
+  if (deck.has("controller")) controller.emplace(controller_params(deck.section("controller")));
+  StageLoads stage_loads(model, sea, rotor ? &*rotor : nullptr);
 
   std::vector<ChannelInfo> all = multibody::Multibody::channels(model);
   const std::size_t sea_first = all.size();
   for (const ChannelInfo& c : sea.channels()) all.push_back(c);
+  const std::size_t rotor_first = all.size();
+  if (rotor)
+    for (const ChannelInfo& c : rotor->channels()) all.push_back(c);
+  const std::size_t controller_first = all.size();
+  if (controller)  // GenTq, GenPwr, BldPitch1–3; GenSpeed comes from the multibody
+    for (const ChannelInfo& c : control::controller_channels("control"))
+      if (c.name != "GenSpeed") all.push_back(c);
   const std::vector<std::size_t> picked = select_channels(deck, all, "floating");
 
   FixedStepScene scene;
@@ -84,17 +163,36 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
   scene.metadata.seeds = sea.seeds();
   scene.metadata.extra = {{"scene", "floating"}};
   std::vector<double> values(all.size());
-  scene.step = [&](double t, double dt) { multibody::Multibody::advance(model, stage_loads, t, dt, state); };
+  const double gearbox = structure.drivetrain.gearbox_ratio;
+  scene.step = [&](double t, double dt) {
+    if (controller) {
+      control::ControllerInput u;
+      u.generator_speed_rad_s = gearbox * state.generator_speed_rad_s;
+      u.rotor_speed_rad_s = state.rotor_speed_rad_s;
+      u.blade_pitch_rad.fill(stage_loads.pitch_rad());
+      if (rotor) u.hub_wind_speed_m_s = rotor->probe_wind(t).x();
+      controller->advance(u, t, dt);
+      stage_loads.hold(controller->output().generator_torque_N_m, controller->output().blade_pitch_rad[0]);
+    }
+    multibody::Multibody::advance(model, stage_loads, t, dt, state);
+  };
   scene.row = [&](double t, std::span<double> row) {
     multibody::AppliedLoads loads;
     stage_loads.loads(t, state, loads);
     const multibody::Output mo = multibody::Multibody::outputs(model, loads, state, t);
     std::copy(mo.channels.begin(), mo.channels.end(), values.begin());
-    sea.channel_values(t, std::span<double>(values).subspan(sea_first));
+    const std::span<double> v(values);
+    sea.channel_values(t, v.subspan(sea_first));
+    if (rotor) rotor->channel_values(t, v.subspan(rotor_first));
+    if (controller) {
+      std::array<double, 6> c{};
+      control::controller_channel_values(controller->output(), c);
+      std::copy(c.begin(), c.begin() + 5, v.begin() + static_cast<long>(controller_first));
+    }
     for (std::size_t k = 0; k < picked.size(); ++k) row[k] = values[picked[k]];
   };
   RunReport report = run_fixed_steps(request, deck, std::move(scene), progress);
-  report.coupling = "rigid multibody, sea loads at every RK4 stage";
+  report.coupling = "rigid multibody; sea and rotor loads at every RK4 stage; controller at the large step";
   return report;
 }
 

@@ -79,7 +79,7 @@ void SeaModules::channel_values(double t, std::span<double> out) const {
     std::copy(v.begin(), v.end(), out.begin() + static_cast<long>(k));
     k += v.size();
   }
-  if (mooring_) mooring::QuasiStaticMooring::channel_values(*mooring_, mooring_out_, out.subspan(k));
+  if (mooring_) mooring::QuasiStaticMooring::channel_values(*mooring_, mooring_out_, out.subspan(k, channel_count_ - k));
 }
 
 std::vector<std::uint64_t> SeaModules::seeds() const {

@@ -1,0 +1,106 @@
+#include "scenes/rotor_aero.hpp"
+
+#include <numbers>
+
+#include "decks/aero_deck.hpp"
+#include "decks/wind_deck.hpp"
+#include "fowtsim/io/turbsim_bts.hpp"
+#include "fowtsim/wind/turbulence_generator.hpp"
+
+namespace fowtsim::driver {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p) {
+  if (p.model == wind::WindModel::turbulent)
+    return std::make_shared<wind::WindField>(p, std::make_shared<wind::FullField>(wind::generate_turbulence(p).field));
+  if (p.model != wind::WindModel::bts) return std::make_shared<wind::WindField>(p);
+  const io::TurbSimField t = io::read_turbsim_bts(p.file);
+  auto f = std::make_shared<wind::FullField>();
+  f->ny = t.ny;
+  f->nz = t.nz;
+  f->n_tower = t.n_tower;
+  f->nt = t.nt;
+  f->dy_m = t.dy_m;
+  f->dz_m = t.dz_m;
+  f->dt_s = t.dt_s;
+  f->z_bottom_m = t.z_bottom_m;
+  f->z_hub_m = t.z_hub_m;
+  f->u_hub_m_s = t.u_hub_m_s;
+  f->periodic = t.periodic;
+  f->grid = t.grid;
+  f->tower = t.tower;
+  return std::make_shared<wind::WindField>(p, f);
+}
+
+}  // namespace
+
+RotorAero::RotorAero(const io::ValidatedDeck& deck, const multibody::Params& structure)
+    : params_(aero_params(deck)), wind_(make_wind(wind_params(deck.section("wind")))) {
+  // ElastoDyn signs in the structure (PreCone < 0 cones upwind), the aero convention + upwind.
+  hub_frame_rotor_.precone_rad = -structure.rotor.precone_deg * kDegree;
+  hub_frame_rotor_.hub_radius_m = structure.rotor.hub_radius_m;
+  local_ = aero::make_input(params_);
+  input_ = aero::make_input(params_);
+  output_ = aero::make_output(params_);
+  const int n = aero::nodes_per_blade(params_);
+  for (int b = 0; b < params_.number_of_blades; ++b)
+    for (int i = 0; i < n; ++i) {
+      const double lo = params_.blade[static_cast<std::size_t>(std::max(i - 1, 0))].span_m;
+      const double hi = params_.blade[static_cast<std::size_t>(std::min(i + 1, n - 1))].span_m;
+      span_weight_m_.push_back(0.5 * (hi - lo));
+    }
+  points_.resize(static_cast<std::size_t>(aero::node_count(params_)));
+  inflow_.resize(points_.size());
+  aero_channel_count_ = aero::Aero::channels(params_).size();
+}
+
+void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad) {
+  aero::place_rigid_rotor(params_, hub_frame_rotor_, 0.0, 0.0, pitch_rad, local_);
+  const Mat3& t_gh = chain.rotor.orientation;
+  const Vec3& apex = chain.apex.position_m;
+  const Vec3& omega = chain.rotor.angular_velocity_rad_s;
+  input_.hub_position_m = apex;
+  input_.hub_orientation = t_gh;
+  input_.rotor_speed_rad_s = rotor_speed_rad_s;
+  input_.blade_pitch_rad.setConstant(pitch_rad);
+  input_.time_s = t;
+  input_.tower_base_position_m = chain.reference.position_m;
+  input_.tower_axis = chain.base.orientation.col(2);
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    const auto c = static_cast<Eigen::Index>(k);
+    const Vec3 r = t_gh * local_.node_position_m.col(c);
+    input_.node_position_m.col(c) = apex + r;
+    input_.node_orientation[k] = t_gh * local_.node_orientation[k];
+    input_.node_velocity_m_s.col(c) = chain.apex.velocity_m_s + omega.cross(r);
+    points_[k] = apex + r;
+  }
+  wind_->velocities(points_, t, inflow_);
+  for (std::size_t k = 0; k < points_.size(); ++k) input_.inflow_velocity_m_s.col(static_cast<Eigen::Index>(k)) = inflow_[k];
+  aero::evaluate(params_, input_, {}, output_);
+
+  force_.setZero();
+  moment_.setZero();
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    const auto c = static_cast<Eigen::Index>(k);
+    const Vec3 f = span_weight_m_[k] * output_.force_N_m.col(c);
+    force_ += f;
+    moment_ += (points_[k] - apex).cross(f) + span_weight_m_[k] * output_.moment_N_m_m.col(c);
+  }
+}
+
+std::vector<ChannelInfo> RotorAero::channels() const {
+  std::vector<ChannelInfo> all = aero::Aero::channels(params_);
+  for (const ChannelInfo& c : wind::Wind::channels({wind_})) all.push_back(c);
+  return all;
+}
+
+void RotorAero::channel_values(double t, std::span<double> out) const {
+  const std::size_t n = aero_channel_count_;
+  aero::channel_values(params_, input_, output_, out.subspan(0, n));
+  const Vec3 v = probe_wind(t);
+  for (int k = 0; k < 3; ++k) out[n + static_cast<std::size_t>(k)] = v[k];
+}
+
+}  // namespace fowtsim::driver

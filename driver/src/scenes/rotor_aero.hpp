@@ -1,0 +1,51 @@
+#pragma once
+// Aerodynamics of the rigid rotor on the floating multibody: the inflow from the wind module at
+// the blade nodes, the blade-element momentum loads of the aero module, summed to a force at the
+// rotor apex and a moment about it for the multibody. Node geometry follows the chain exactly:
+// the blade table is placed once in the hub frame (aero::place_rigid_rotor with a hub at rest),
+// then moved with the hub's pose, velocity and angular velocity at every evaluation.
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "fowtsim/aero/aero.hpp"
+#include "fowtsim/aero/rigid_rotor.hpp"
+#include "fowtsim/core/channels.hpp"
+#include "fowtsim/io/schema.hpp"
+#include "fowtsim/multibody/kinematics.hpp"
+#include "fowtsim/multibody/model.hpp"
+#include "fowtsim/multibody/params.hpp"
+#include "fowtsim/wind/wind_field.hpp"
+
+namespace fowtsim::driver {
+
+class RotorAero {
+ public:
+  // Reads the deck's `aero`, `airfoils` and `wind` sections; the rotor geometry (precone, hub
+  // radius) comes from the structure.
+  RotorAero(const io::ValidatedDeck& deck, const multibody::Params& structure);
+
+  // Loads at time t on the rotor in the chain configuration `chain`, blade pitch `pitch_rad`:
+  // force at the apex and moment about it, inertial frame [N, N·m].
+  void evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad);
+  const Vec3& force_N() const { return force_; }
+  const Vec3& moment_N_m() const { return moment_; }
+  // Hub-height wind speed at the probe (for the controller's record 27 and the channels).
+  Vec3 probe_wind(double t) const { return wind_->velocity(wind_->params().probe_point_m, t); }
+
+  std::vector<ChannelInfo> channels() const;  // aero channels, then Wind1VelX/Y/Z
+  void channel_values(double t, std::span<double> out) const;
+
+ private:
+  aero::Params params_;
+  std::shared_ptr<const wind::WindField> wind_;
+  aero::RigidRotor hub_frame_rotor_;  // the rotor placed at the origin with h = identity
+  aero::Aero::Input local_, input_;
+  aero::Aero::Output output_;
+  std::vector<double> span_weight_m_;  // trapezoidal length of each node [m]
+  std::vector<Vec3> points_, inflow_;
+  std::size_t aero_channel_count_ = 0;
+  Vec3 force_ = Vec3::Zero(), moment_ = Vec3::Zero();
+};
+
+}  // namespace fowtsim::driver
