@@ -56,6 +56,11 @@ class Controller {
         params_);
   }
   const control::ControllerOutput& output() const { return output_; }
+  // The last call a DISCON library gets (status −1: it closes its files); nothing for the built-in law.
+  void finish(double t) {
+    if (auto* p = std::get_if<control::ExternalController::Params>(&params_))
+      control::ExternalController::finish(*p, t, std::get<control::ExternalController::State>(state_));
+  }
 
  private:
   static control::BaselineState make_state_of(const control::BaselineParams& p) { return control::BaselineController::make_state(p); }
@@ -135,9 +140,9 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
   if (deck.has("aero") && (!deck.has("airfoils") || !deck.has("wind")))
     throw InputError({"floating", std::nullopt, "aero", "airfoils and wind sections"},
                      where(deck, "aero") + ": rotor aerodynamics need the `airfoils` and `wind` sections too");
-  if (deck.has("aero") && structure.rotor.flexible_blades)
+  if (structure.rotor.flexible_blades)  // the blades would be missing: no beam is coupled here yet
     throw InputError({"floating", std::nullopt, "structure.rotor.flexible_blades", "false"},
-                     where(deck, "structure.rotor.flexible_blades") + ": this scene has rigid blades only (flexible blades: next issue)");
+                     where(deck, "structure.rotor.flexible_blades") + ": this scene has rigid blades only (MBBT blades: next issue)");
   multibody::State state = multibody::Multibody::make_state(model);
   SeaModules sea(deck, platform_motion(state));
   std::optional<RotorAero> rotor;
@@ -191,7 +196,15 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
     }
     for (std::size_t k = 0; k < picked.size(); ++k) row[k] = values[picked[k]];
   };
-  RunReport report = run_fixed_steps(request, deck, std::move(scene), progress);
+  RunReport report = [&] {
+    try {
+      return run_fixed_steps(request, deck, std::move(scene), progress);
+    } catch (...) {
+      if (controller) controller->finish(0.0);
+      throw;
+    }
+  }();
+  if (controller) controller->finish(report.simulated_s);
   report.coupling = "rigid multibody; sea and rotor loads at every RK4 stage; controller at the large step";
   return report;
 }

@@ -44,13 +44,6 @@ RotorAero::RotorAero(const io::ValidatedDeck& deck, const multibody::Params& str
   local_ = aero::make_input(params_);
   input_ = aero::make_input(params_);
   output_ = aero::make_output(params_);
-  const int n = aero::nodes_per_blade(params_);
-  for (int b = 0; b < params_.number_of_blades; ++b)
-    for (int i = 0; i < n; ++i) {
-      const double lo = params_.blade[static_cast<std::size_t>(std::max(i - 1, 0))].span_m;
-      const double hi = params_.blade[static_cast<std::size_t>(std::min(i + 1, n - 1))].span_m;
-      span_weight_m_.push_back(0.5 * (hi - lo));
-    }
   points_.resize(static_cast<std::size_t>(aero::node_count(params_)));
   inflow_.resize(points_.size());
   aero_channel_count_ = aero::Aero::channels(params_).size();
@@ -80,14 +73,10 @@ void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, doub
   for (std::size_t k = 0; k < points_.size(); ++k) input_.inflow_velocity_m_s.col(static_cast<Eigen::Index>(k)) = inflow_[k];
   aero::evaluate(params_, input_, {}, output_);
 
-  force_.setZero();
-  moment_.setZero();
-  for (std::size_t k = 0; k < points_.size(); ++k) {
-    const auto c = static_cast<Eigen::Index>(k);
-    const Vec3 f = span_weight_m_[k] * output_.force_N_m.col(c);
-    force_ += f;
-    moment_ += (points_[k] - apex).cross(f) + span_weight_m_[k] * output_.moment_N_m_m.col(c);
-  }
+  // The aero module's rotor resultant (exact integration of the linear load distribution, the
+  // same numbers as the RtAero* channels), in h about the apex → g.
+  force_ = t_gh * output_.rotor.force_hub_N;
+  moment_ = t_gh * output_.rotor.moment_hub_N_m;
 }
 
 std::vector<ChannelInfo> RotorAero::channels() const {

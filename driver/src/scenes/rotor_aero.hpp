@@ -42,7 +42,6 @@ class RotorAero {
   aero::RigidRotor hub_frame_rotor_;  // the rotor placed at the origin with h = identity
   aero::Aero::Input local_, input_;
   aero::Aero::Output output_;
-  std::vector<double> span_weight_m_;  // trapezoidal length of each node [m]
   std::vector<Vec3> points_, inflow_;
   std::size_t aero_channel_count_ = 0;
   Vec3 force_ = Vec3::Zero(), moment_ = Vec3::Zero();

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fowtsim/core/error.hpp"
+#include "decks/deck_helpers.hpp"
 #include "fowtsim/core/version.hpp"
 #include "run/output_set.hpp"
 
@@ -50,6 +51,9 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const long steps = std::lround(t_max / dt);
+  if (steps < 1 || std::abs(static_cast<double>(steps) * dt - t_max) > 1e-9 * t_max)
+    throw InputError({"scene", std::nullopt, "simulation.dt_s", "a step that divides t_max_s"},
+                     where(deck, "simulation.dt_s") + ": the time step must divide t_max_s (a whole number of steps)");
   double t = 0.0;
   try {
     write_row(t);
@@ -59,7 +63,7 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
       if (k % decimation == 0) write_row(t);
       if (progress) progress(t, t_max);
     }
-  } catch (const NumericalError& e) {
+  } catch (const std::exception& e) {  // numerical trouble, or a failing external controller
     outputs.finish({elapsed(), std::string("failed: ") + e.what(), t});
     throw;
   }

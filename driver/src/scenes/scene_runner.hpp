@@ -22,8 +22,9 @@ struct FixedStepScene {
   std::function<void(double t, std::span<double> row)> row;  // values of `written` at t
 };
 
-// Runs t = 0, dt, …, t_max (deck or --tmax), writing every output.decimation-th row to the files
-// the request and deck name. A NumericalError closes the files as "failed: …" and propagates.
+// Runs t = 0, dt, …, t_max (deck or --tmax; dt must divide it), writing every
+// output.decimation-th row to the files the request and deck name. An exception during the run
+// closes the files as "failed: …" (keeping every row so far) and propagates.
 RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& deck, FixedStepScene scene,
                           const ProgressCallback& progress);
 

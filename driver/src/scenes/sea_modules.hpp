@@ -33,7 +33,6 @@ class SeaModules {
   // Wave-probe, hydro and mooring channels, in the order channel_values() fills them.
   std::vector<ChannelInfo> channels() const;
   void channel_values(double t, std::span<double> out) const;
-  std::size_t channel_count() const { return channel_count_; }
   // Random seeds in use (the wave seed, when there is a sea).
   std::vector<std::uint64_t> seeds() const;
 

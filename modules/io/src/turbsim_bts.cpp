@@ -95,10 +95,10 @@ TurbSimField read_turbsim_bts(const std::filesystem::path& path) {
   f.description.assign(bytes.data() + at, static_cast<std::size_t>(n_char));
   at += static_cast<std::size_t>(n_char);
 
+  // Compare by division: per_step · nt could overflow size_t for a corrupt header.
   const std::size_t per_step = (static_cast<std::size_t>(f.nz) * f.ny + f.n_tower) * 3;
-  const std::size_t needed = at + 2 * per_step * static_cast<std::size_t>(f.nt);
-  if (bytes.size() < needed)
-    fail(path, "truncated: " + std::to_string(bytes.size()) + " bytes, the header announces " + std::to_string(needed),
+  if (static_cast<std::size_t>(f.nt) > (bytes.size() - at) / 2 / per_step)
+    fail(path, "truncated: " + std::to_string(bytes.size()) + " bytes cannot hold the " + std::to_string(f.nt) + " time steps the header announces",
          "is the file complete?");
   const std::size_t grid_values = static_cast<std::size_t>(f.nz) * f.ny * 3;
   f.grid.resize(grid_values * f.nt);

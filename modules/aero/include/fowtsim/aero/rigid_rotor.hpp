@@ -7,7 +7,8 @@
 // shaft; a nose-up tilt points x_s downward); hub frame h = s R_x(ψ) (azimuth ψ = 0: blade 1 up;
 // positive rotation about x_h is clockwise seen from upwind); blade b (0-based) frame
 // = h R_x(2π b/B) R_y(−precone) (precone > 0 cones the tips upwind); node frame = blade frame
-// R_y(curve_angle); node position = hub + T_gb (curve_ac, sweep_ac, hub_radius + span);
+// R_y(curve_angle); node position = hub + T_g,blade (curve_ac, sweep_ac, hub_radius + span)
+// (the blade frame, without the curve angle);
 // airfoil frame T_ga = T_gb R_z(−(twist + pitch)).
 #include "fowtsim/aero/aero.hpp"
 
