@@ -15,6 +15,7 @@ void print_run_summary(std::FILE* out, const RunReport& r) {
   for (const auto& p : r.outputs) fmt::print(out, "  output           {}\n", p.string());
   fmt::print(out, "  warnings         {}\n", r.warnings.empty() ? "none" : std::to_string(r.warnings.size()));
   for (const auto& w : r.warnings) fmt::print(out, "    - {}\n", w);
+  for (const auto& line : r.results) fmt::print(out, "  {}\n", line);
 }
 
 void print_comparison(std::FILE* out, const ComparisonReport& r) {

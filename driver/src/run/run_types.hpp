@@ -25,6 +25,7 @@ struct RunReport {
   std::string coupling;                        // coupling mode
   std::vector<std::filesystem::path> outputs;  // files written
   std::vector<std::string> warnings;           // shown in the summary
+  std::vector<std::string> results;            // lines of results asked for by the deck (summary)
 };
 
 // Called after every large step with the current and the final simulated time [s].

@@ -98,6 +98,8 @@ Schema platform_scene_schema() {
       {"simulation", simulation_schema("time step").doc("time span and step")},
       {"output", output_schema().optional().doc("what to write")},
       {"platform_motion", motion_schema().doc("prescribed platform motion (reference point at SWL)")},
+      {"report_mooring_stiffness", Schema::boolean().default_value(false)
+                                       .doc("write the linearised 6×6 mooring stiffness at the mean pose to the summary and metadata")},
       {"waves", waves_schema().optional().doc("incident sea; absent = still water")},
       {"hydro", hydro_schema().optional().doc("Morison strips, hydrostatics, linear extras; absent = none")},
       {"mooring", mooring_schema().optional().doc("mooring lines; absent = none")},
@@ -132,8 +134,23 @@ RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& 
     sea.channel_values(t, std::span<double>(values).subspan(6));
     for (std::size_t k = 0; k < picked.size(); ++k) row[k] = values[picked[k]];
   };
+  std::vector<std::string> stiffness_rows;
+  if (deck.boolean("report_mooring_stiffness")) {
+    const Mat6 k = sea.mooring_stiffness(platform_motion(trajectory.mean, Vec6::Zero()));
+    std::string flat;
+    for (int r = 0; r < 6; ++r) {
+      stiffness_rows.push_back(fmt::format("  {:>12.5g} {:>12.5g} {:>12.5g} {:>12.5g} {:>12.5g} {:>12.5g}", k(r, 0), k(r, 1), k(r, 2),
+                                           k(r, 3), k(r, 4), k(r, 5)));
+      for (int c = 0; c < 6; ++c) flat += fmt::format("{}{:.10g}", flat.empty() ? "" : " ", k(r, c));
+    }
+    scene.metadata.extra.push_back({"mooring_stiffness_6x6", flat});
+  }
   RunReport report = run_fixed_steps(request, deck, std::move(scene), progress);
   report.coupling = "prescribed motion";
+  if (!stiffness_rows.empty()) {
+    report.results.push_back("mooring stiffness at the mean pose (N/m, N/rad, N·m/m, N·m/rad; surge … yaw):");
+    for (const std::string& row : stiffness_rows) report.results.push_back(row);
+  }
   return report;
 }
 

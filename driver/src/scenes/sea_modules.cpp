@@ -5,6 +5,7 @@
 #include "decks/hydro_deck.hpp"
 #include "decks/mooring_deck.hpp"
 #include "decks/waves_deck.hpp"
+#include "fowtsim/mooring/stiffness.hpp"
 
 namespace fowtsim::driver {
 
@@ -80,6 +81,13 @@ void SeaModules::channel_values(double t, std::span<double> out) const {
     k += v.size();
   }
   if (mooring_) mooring::QuasiStaticMooring::channel_values(*mooring_, mooring_out_, out.subspan(k, channel_count_ - k));
+}
+
+Mat6 SeaModules::mooring_stiffness(const FrameMotion& pose) const {
+  if (!mooring_) return Mat6::Zero();
+  mooring::QuasiStaticMooring::State state = mooring::QuasiStaticMooring::make_state(*mooring_);
+  mooring::QuasiStaticMooring::evaluate(*mooring_, {pose, 0.0}, state);
+  return mooring::linearized_stiffness(*mooring_, {pose, 0.0}, state);
 }
 
 std::vector<std::uint64_t> SeaModules::seeds() const {

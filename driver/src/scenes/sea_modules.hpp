@@ -33,6 +33,9 @@ class SeaModules {
   // Wave-probe, hydro and mooring channels, in the order channel_values() fills them.
   std::vector<ChannelInfo> channels() const;
   void channel_values(double t, std::span<double> out) const;
+  // Linearised 6×6 mooring stiffness at `pose` (analytic, about the reference point, inertial
+  // axes; mooring/stiffness.hpp); zero without mooring.
+  Mat6 mooring_stiffness(const FrameMotion& pose) const;
   // Random seeds in use (the wave seed, when there is a sea).
   std::vector<std::uint64_t> seeds() const;
 
