@@ -123,12 +123,12 @@ TEST_CASE("bad scene decks stop before the run with file, line and key", "[unit]
   }
 }
 
-TEST_CASE("the default deck's run matches the exact solution to the coupling error", "[verification][run]") {
+TEST_CASE("the toy deck's run matches the exact solution to the coupling error", "[verification][run]") {
   // multi_rate, ΔT = 0.05 s, n = 10 over 60 s: measured max |X − X_exact| = 1.46e-2 m (the lag
   // error accumulates: 4.7e-3 over the study's 20 s). The run is deterministic and the regression
   // tier pins every digit; this bound sits just above the measurement so that a change in the
   // coupling's accuracy is noticed here, against the exact solution, and explained.
-  const auto dir = testing::scratch_dir("default_deck");
+  const auto dir = testing::scratch_dir("toy_deck");
   const auto deck = testing::source_dir() / "inputs/toy_coupled_oscillators.yaml";
   run_scene(request_for(deck, dir / "run", std::string("h5")), nullptr);
   const io::ChannelTable t = io::read_hdf5_channels(dir / "run.h5");
