@@ -10,6 +10,7 @@
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/turbsim_bts.hpp"
 #include "fowtsim/testing/skip.hpp"
+#include "run/run_scene.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -54,4 +55,15 @@ TEST_CASE("fowtsim turbulence writes a .bts that reads back, the same for the sa
   CHECK(a.nt == 256);  // 64 s at 0.25 s, periodic
   CHECK(a.grid == b.grid);
   CHECK(std::filesystem::exists(dir / "a.h5"));
+}
+
+TEST_CASE("a floating deck whose aero blade disagrees with the structure stops before the run", "[unit][decks]") {
+  const auto dir = testing::scratch_dir("floating_rotor_mismatch");
+  const auto deck = dir / "turbine.yaml";
+  std::ofstream(deck) << "include: [" << (testing::source_dir() / "inputs/oc3_hywind/turbine_steady_15mps.yaml").string() << "]\n"
+                      << "aero: {number_of_blades: 2}\n";
+  RunRequest r;
+  r.deck_path = deck;
+  r.output_base = dir / "run";
+  CHECK_THROWS_WITH(run_scene(r, nullptr), Catch::Contains("turbine.yaml:2") && Catch::Contains("2 blades, the structure has 3"));
 }

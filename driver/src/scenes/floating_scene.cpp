@@ -4,6 +4,8 @@
 #include <type_traits>
 #include <variant>
 
+#include <fmt/format.h>
+
 #include "decks/aero_deck.hpp"
 #include "decks/controller_deck.hpp"
 #include "decks/deck_helpers.hpp"
@@ -146,7 +148,20 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
   multibody::State state = multibody::Multibody::make_state(model);
   SeaModules sea(deck, platform_motion(state));
   std::optional<RotorAero> rotor;
-  if (deck.has("aero")) rotor.emplace(deck, structure);
+  if (deck.has("aero")) {
+    rotor.emplace(deck, structure);
+    // One rotor, two descriptions: the aero blade table and the structure must agree on it.
+    const aero::Params& ap = rotor->params();
+    if (ap.number_of_blades != structure.rotor.blade_count)
+      throw InputError({"floating", std::nullopt, "aero.number_of_blades", "structure.rotor.blade_count"},
+                       where(deck, "aero.number_of_blades") + fmt::format(": {} blades, the structure has {}", ap.number_of_blades,
+                                                                          structure.rotor.blade_count));
+    const double tip = structure.rotor.hub_radius_m + ap.blade.back().span_m;
+    if (std::abs(tip / structure.rotor.tip_radius_m - 1.0) > 1e-3)
+      throw InputError({"floating", std::nullopt, "aero.blade.nodes", "the structure's tip radius"},
+                       where(deck, "aero.blade.nodes") + fmt::format(": hub radius + last span = {:.4g} m, the structure's tip radius is {:.4g} m",
+                                                                     tip, structure.rotor.tip_radius_m));
+  }
   std::optional<Controller> controller;
   if (deck.has("controller")) controller.emplace(controller_params(deck.section("controller")));
   StageLoads stage_loads(model, sea, rotor ? &*rotor : nullptr);

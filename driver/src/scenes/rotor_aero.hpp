@@ -28,6 +28,7 @@ class RotorAero {
   // Loads at time t on the rotor in the chain configuration `chain`, blade pitch `pitch_rad`:
   // force at the apex and moment about it, inertial frame [N, N·m].
   void evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad);
+  const aero::Params& params() const { return params_; }
   const Vec3& force_N() const { return force_; }
   const Vec3& moment_N_m() const { return moment_; }
   // Hub-height wind speed at the probe (for the controller's record 27 and the channels).

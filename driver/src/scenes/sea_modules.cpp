@@ -17,13 +17,23 @@ SeaModules::SeaModules(const io::ValidatedDeck& deck, const FrameMotion& initial
   if (deck.has("mooring")) mooring_ = mooring_params(deck.section("mooring"));
   if (hydro_) {
     hydro_in_ = hydro::make_input(*hydro_);
-    waterline_.resize(3, static_cast<Eigen::Index>(hydro_->members.size()));
     if (!sea_.field->calm()) {
       hydro::Points points(3, hydro::node_count(*hydro_));
       hydro::strip_points(*hydro_, initial_pose, VecX::Zero(static_cast<Eigen::Index>(hydro_->members.size())), points);
       std::vector<Vec3> list;
       for (Eigen::Index i = 0; i < points.cols(); ++i) list.emplace_back(points.col(i));
       kinematics_ = std::make_unique<waves::PrecomputedKinematics>(*sea_.field, list);
+      if (hydro_->surface == hydro::SurfaceModel::wave_elevation) {
+        // Elevation series where each member meets the still water at the initial pose, like the
+        // kinematics: no direct summation over the components at every stage.
+        hydro::Points waterline(3, static_cast<Eigen::Index>(hydro_->members.size()));
+        hydro::waterline_points(*hydro_, initial_pose, waterline);
+        std::vector<Vec3> at_surface;
+        for (Eigen::Index m = 0; m < waterline.cols(); ++m) at_surface.emplace_back(waterline(0, m), waterline(1, m), 0.0);
+        waves::PrecomputeOptions options;
+        options.elevation_only = true;
+        waterline_elevation_ = std::make_unique<waves::PrecomputedKinematics>(*sea_.field, at_surface, options);
+      }
     }
   }
   if (mooring_) mooring_state_ = mooring::QuasiStaticMooring::make_state(*mooring_);
@@ -34,11 +44,9 @@ void SeaModules::evaluate(double t, const FrameMotion& pose) {
   if (hydro_) {
     hydro_in_.platform = pose;
     hydro_in_.time_s = t;
-    if (hydro_->surface == hydro::SurfaceModel::wave_elevation) {
-      hydro::waterline_points(*hydro_, pose, waterline_);
-      for (Eigen::Index m = 0; m < waterline_.cols(); ++m)
-        hydro_in_.surface_elevation_m[m] = sea_.field->calm() ? 0.0 : sea_.field->elevation(waterline_(0, m), waterline_(1, m), t);
-    }
+    if (waterline_elevation_)
+      for (std::size_t m = 0; m < waterline_elevation_->size(); ++m)
+        hydro_in_.surface_elevation_m[static_cast<Eigen::Index>(m)] = waterline_elevation_->elevation(m, t);
     if (kinematics_) {
       for (std::size_t i = 0; i < kinematics_->size(); ++i) {
         const waves::WaveKinematics k = kinematics_->at(i, t);

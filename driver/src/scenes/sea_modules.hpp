@@ -1,9 +1,10 @@
 #pragma once
 // The sea acting on a platform, as the scenes use it: waves (optional), hydro (optional) and
 // mooring (optional), read from their deck sections, evaluated together at a platform pose and
-// time. Wave kinematics are precomputed once at the hydro strip nodes of the initial pose
-// (HydroDyn's default: kinematics at the undisplaced nodes), so an evaluation does no FFT and no
-// allocation.
+// time. Wave kinematics (and, for hydro's wave_elevation surface, the elevation at each member's
+// waterline) are precomputed once at the points of the initial pose (HydroDyn's default:
+// kinematics at the undisplaced nodes), so an evaluation does no FFT, no summation over the
+// components and no allocation.
 #include <memory>
 #include <optional>
 #include <span>
@@ -46,9 +47,9 @@ class SeaModules {
   std::optional<hydro::Params> hydro_;
   std::optional<mooring::MooringParams> mooring_;
   std::unique_ptr<waves::PrecomputedKinematics> kinematics_;
+  std::unique_ptr<waves::PrecomputedKinematics> waterline_elevation_;  // wave_elevation surface only
   hydro::Hydro::Input hydro_in_;
   hydro::Hydro::Output hydro_out_;
-  hydro::Points waterline_;
   mooring::QuasiStaticMooring::State mooring_state_{};
   mooring::QuasiStaticMooring::Output mooring_out_{};
   std::size_t channel_count_ = 0;
