@@ -53,6 +53,8 @@ void DynamicStepper::step(const BeamInput& input, double dt, BeamState& state) {
     throw NumericalError({"beam", t_end, "increments", "reduce the beam time step"},
                          "non-finite beam increment");
   const double max_rot = update_base(q_, state);
+  ++matrix_age_;
+  turned_since_matrix_ += max_rot;
   if (max_rot > options_.max_increment_rad)
     throw NumericalError(
         {"beam", t_end, "incremental rotation", "reduce the beam time step dt"},
@@ -72,9 +74,9 @@ void DynamicStepper::step(const BeamInput& input, double dt, BeamState& state) {
 //   M a_{1−αm} + C v_{1−αf} + K q_{1−αf} = r,  x_{1−α} = (1−α) x1 + α x0,
 //   q1 = Δt v0 + Δt² ((½−β) a0 + β a1),  v1 = v0 + Δt ((1−γ) a0 + γ a1),
 //   αm = (2ρ∞−1)/(ρ∞+1), αf = ρ∞/(ρ∞+1), γ = ½ − αm + αf, β = ¼ (1 − αm + αf)².
-// One linear solve for a1:
-//   [(1−αm) M + (1−αf) γ Δt C + (1−αf) β Δt² K] a1
-//     = r − αm M a0 − C (v0 + (1−αf)(1−γ) Δt a0) − (1−αf) K (Δt v0 + (½−β) Δt² a0).
+// Written for the change Δa = a1 − a0, one linear solve:
+//   [(1−αm) M + (1−αf) γ Δt C + (1−αf) β Δt² K] Δa
+//     = r − M a0 − C (v0 + (1−αf) Δt a0) − (1−αf) K (Δt v0 + ½ Δt² a0)   (= R at a1 = a0).
 // Velocities and accelerations are resolved in f, so they carry over to the new base unchanged
 // (eqs. 2.78–2.79).
 void DynamicStepper::integrate_generalized_alpha(const BeamInput& input, const BeamState& state,
@@ -91,19 +93,46 @@ void DynamicStepper::integrate_generalized_alpha(const BeamInput& input, const B
     for (int i = 0; i < n; ++i)
       a0_.segment<6>(6 * i) = system_.mass[i].partialPivLu().solve(
           Vec6(system_.rhs.segment<6>(6 * i) - w_damping_.segment<6>(6 * i)));
+    matrix_valid_ = false;  // a new motion: do not carry a matrix over from another
   }
 
-  w_damping_ = v0_ + ((1.0 - af) * (1.0 - gamma) * dt) * a0_;
-  w_stiffness_ = (dt * (1.0 - af)) * v0_ + ((0.5 - beta) * dt * dt * (1.0 - af)) * a0_;
-  const StepCombination combination{1.0 - am, (1.0 - af) * gamma * dt, (1.0 - af) * beta * dt * dt,
-                                    am, &w_damping_, &w_stiffness_, &a0_};
-  assemble_step(model_, input, state, combination, lhs_, a1_);  // a1_ holds the rhs, solved in place
-  if (!lhs_.factor())
-    throw NumericalError({"beam", std::nullopt, "step matrix", "check the mass and inertia of the beam"},
-                         "singular step matrix (zero mass or inertia?)");
+  w_damping_ = v0_ + ((1.0 - af) * dt) * a0_;
+  w_stiffness_ = ((1.0 - af) * dt) * v0_ + (0.5 * (1.0 - af) * dt * dt) * a0_;
+  step_residual(model_, input, state, w_damping_, w_stiffness_, a0_, a1_);  // R, solved in place
+  const StepWeights weights{1.0 - am, (1.0 - af) * gamma * dt, (1.0 - af) * beta * dt * dt};
+  if (step_matrix_is_stale(input.frame, weights)) {
+    assemble_step_matrix(model_, input, state, weights, lhs_);
+    if (!lhs_.factor())
+      throw NumericalError({"beam", std::nullopt, "step matrix", "check the mass and inertia of the beam"},
+                           "singular step matrix (zero mass or inertia?)");
+    matrix_valid_ = true;
+    matrix_age_ = 0;
+    turned_since_matrix_ = 0.0;
+    matrix_weights_ = weights;
+    matrix_frame_ = input.frame;
+  }
   lhs_.solve_in_place(a1_);
+  a1_ += a0_;
   q_ = dt * v0_ + (dt * dt) * ((0.5 - beta) * a0_ + beta * a1_);
   v1_ = v0_ + dt * ((1.0 - gamma) * a0_ + gamma * a1_);
+}
+
+// The frame motion enters A per unit mass as c·2Ω̃ + k·(Ω̇̃ + Ω̃²) beside the mass part m·I
+// (StepWeights m, c, k), so its change since the build, relative to m, is bounded by
+//   (2c |ΔΩ| + k (|ΔΩ̇| + |ΔΩ| (|Ω| + |Ω_A|))) / m.
+bool DynamicStepper::step_matrix_is_stale(const FrameKinematics& frame, const StepWeights& w) const {
+  if (!matrix_valid_ || matrix_age_ >= options_.matrix_max_age ||
+      turned_since_matrix_ > options_.matrix_max_rotation_rad)
+    return true;
+  if (w.mass != matrix_weights_.mass || w.damping != matrix_weights_.damping ||
+      w.stiffness != matrix_weights_.stiffness)
+    return true;  // Δt changed
+  const Vec3& om = frame.angular_velocity_rad_s;
+  const Vec3& om_a = matrix_frame_.angular_velocity_rad_s;
+  const double d_om = (om - om_a).norm();
+  const double d_om_dot = (frame.angular_acceleration_rad_s2 - matrix_frame_.angular_acceleration_rad_s2).norm();
+  const double change = (2.0 * w.damping * d_om + w.stiffness * (d_om_dot + d_om * (om.norm() + om_a.norm()))) / w.mass;
+  return change > options_.matrix_max_frame_change;
 }
 
 void DynamicStepper::integrate_erk(const BeamInput& input, const BeamState& state, double dt) {

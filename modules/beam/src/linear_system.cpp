@@ -8,11 +8,6 @@
 namespace fowtsim::beam {
 namespace {
 
-NodePose pose_of(const BeamModel& model, const BeamState& state, int node) {
-  if (node < 0) return {model.root_position_m, model.root_orientation};
-  return {state.position_m[node], state.orientation[node]};
-}
-
 // Inertial blocks of one node (eqs. 2.52–2.53 and 2.57–2.66 about the node, see header):
 // frame acceleration A = Ω̇̃ + Ω̃Ω̃ and the acceleration a0 of the mass centre at the base.
 void add_node_inertia(const NodeModel& node, const Vec3& x, const Mat3& r,
@@ -91,17 +86,6 @@ void scatter(const Mat12& t, int a, int b, BlockTridiagonal& m) {
   m.lower(a) = t.block<6, 6>(6, 0);
 }
 
-// [q_a; q_b] of a nodal vector, zero for the clamped root.
-Vec12 section_pair(const VecX& q, int a, int b) {
-  Vec12 out;
-  if (a < 0)
-    out.head<6>().setZero();
-  else
-    out.head<6>() = q.segment<6>(6 * a);
-  out.tail<6>() = q.segment<6>(6 * b);
-  return out;
-}
-
 }  // namespace
 
 void LinearizedBeam::resize(int nodes) {
@@ -130,7 +114,7 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
   Mat12 tangent;
   for (const SectionModel& sec : model.sections) {
     const int a = sec.inboard, b = sec.outboard;
-    linearize_section(sec, pose_of(model, state, a), pose_of(model, state, b), lin);
+    linearize_section(sec, node_pose(model, state, a), node_pose(model, state, b), lin);
     out.rhs.segment<6>(6 * b) += lin.node_loads.tail<6>();
     if (a >= 0) out.rhs.segment<6>(6 * a) += lin.node_loads.head<6>();
     section_tangent(lin, sec.stiffness, 1.0, tangent);
@@ -141,46 +125,28 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
   }
 }
 
-void assemble_step(const BeamModel& model, const BeamInput& input, const BeamState& state,
-                   const StepCombination& c, BlockTridiagonal& lhs, VecX& rhs) {
-  const int n = model.node_count();
-  const VecX& w_c = *c.damping_vector;
-  const VecX& w_k = *c.stiffness_vector;
-  const VecX& a0 = *c.acceleration;
+void assemble_step_matrix(const BeamModel& model, const BeamInput& input, const BeamState& state,
+                          const StepWeights& w, BlockTridiagonal& lhs) {
   NodeBlocks nb;
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < model.node_count(); ++i) {
     node_blocks(model, input, state, i, Inertia::included, nb);
-    lhs.diag(i) = c.mass * nb.mass + c.damping * nb.damping + c.stiffness * nb.stiffness;
-    rhs.segment<6>(6 * i) = nb.rhs - nb.damping * w_c.segment<6>(6 * i) -
-                            nb.stiffness * w_k.segment<6>(6 * i) -
-                            c.mass_rhs * (nb.mass * a0.segment<6>(6 * i));
+    lhs.diag(i) = w.mass * nb.mass + w.damping * nb.damping + w.stiffness * nb.stiffness;
   }
-
-  // Per section: c K + d C = −G (c C + d D) B − c·geometric, and
-  // −K w_k − C w_c = G (C B w_k + D B w_c) + geometric·w_k.
+  // Per section: k K + c C = −G (k C + c D) B − k·geometric.
   SectionLinearization lin;
   Mat12 tangent;
   for (const SectionModel& sec : model.sections) {
     const int a = sec.inboard, b = sec.outboard;
-    linearize_section(sec, pose_of(model, state, a), pose_of(model, state, b), lin);
-    const Mat6 weight = c.stiffness * sec.stiffness + c.damping * sec.damping;
-    section_tangent(lin, weight, c.stiffness, tangent);
+    linearize_section(sec, node_pose(model, state, a), node_pose(model, state, b), lin);
+    section_tangent(lin, w.stiffness * sec.stiffness + w.damping * sec.damping, w.stiffness, tangent);
     scatter(tangent, a, b, lhs);
-
-    const Vec9 rk = reduced(section_pair(w_k, a, b));
-    const Vec9 rc = reduced(section_pair(w_c, a, b));
-    const Vec6 s = lin.resultant + sec.stiffness * (lin.strain_map * rk) +
-                   sec.damping * (lin.strain_map * rc);
-    const Vec12 loads = node_loads_of(lin, s) + lin.geometric * rk;
-    rhs.segment<6>(6 * b) += loads.tail<6>();
-    if (a >= 0) rhs.segment<6>(6 * a) += loads.head<6>();
   }
 }
 
 Vec6 root_reaction(const BeamModel& model, const BeamState& state) {
   const SectionModel& sec = model.sections.front();
   const Vec6 at_rest = Vec6::Zero();
-  return section_loads(sec, pose_of(model, state, -1), pose_of(model, state, 0), &at_rest,
+  return section_loads(sec, node_pose(model, state, -1), node_pose(model, state, 0), &at_rest,
                        &state.velocity[0])
       .head<6>();
 }

@@ -114,6 +114,44 @@ void section_tangent(const SectionLinearization& lin, const Mat6& weight, double
   out.middleCols<3>(9) = t.rightCols<3>();
 }
 
+Vec12 section_residual_loads(const SectionModel& sec, const NodePose& a, const NodePose& b,
+                             const Vec9& w_k, const Vec9& w_c) {
+  Vec3 psi;
+  SectionLinearization k;
+  kinematics(sec, a, b, psi, k);
+  const Mat3& r_j = k.orientation;
+  const Mat3 psi_inverse_jacobian = right_jacobian_inverse(psi);
+  const Mat3 section_jacobian = right_jacobian(sec.alpha * psi);
+  const double inv_ds = 1.0 / sec.length_m;
+
+  // B w (header, "Increments"): δψ = J_r⁻¹(ψ) R_bᵀ (θ_b − θ_a), δφ_j = θ_a + α R_j J_r(αψ) δψ,
+  // δγ = R_jᵀ (δd + d × δφ_j)/Δs with δd = u_b − u_a = −w_0, δκ = δψ/Δs.
+  auto strain_increment = [&](const Vec9& w, Vec3& section_rotation) {
+    const Vec3 dpsi = psi_inverse_jacobian * (b.orientation.transpose() * (w.tail<3>() - w.segment<3>(3)));
+    section_rotation = w.segment<3>(3) + sec.alpha * (r_j * (section_jacobian * dpsi));
+    Vec6 e;
+    e.head<3>() = r_j.transpose() * (k.chord.cross(section_rotation) - w.head<3>()) * inv_ds;
+    e.tail<3>() = dpsi * inv_ds;
+    return e;
+  };
+  Vec3 phi_k, phi_c;
+  const Vec6 e_k = strain_increment(w_k, phi_k);
+  const Vec6 e_c = strain_increment(w_c, phi_c);
+  const Vec6 s_base = sec.stiffness * k.strain;
+  Vec12 out = node_loads_of(k, s_base + sec.stiffness * e_k + sec.damping * e_c);
+
+  // Geometric part at the base resultant (as in linearize_section): the loads turn with δφ_j and
+  // the arm d stretches by δd.
+  const Vec3 f = r_j * s_base.head<3>(), m = r_j * s_base.tail<3>();
+  const Vec3 arm = f.cross(w_k.head<3>());  // F̃ (u_a − u_b)
+  const Vec3 g = f.cross(phi_k), h = m.cross(phi_k), dg = k.chord.cross(g);
+  out.segment<3>(0) -= g;
+  out.segment<3>(3) += sec.alpha * (arm - dg) - h;
+  out.segment<3>(6) += g;
+  out.segment<3>(9) += (1.0 - sec.alpha) * (arm - dg) + h;
+  return out;
+}
+
 Vec12 section_loads(const SectionModel& sec, const NodePose& a, const NodePose& b,
                     const Vec6* velocity_a, const Vec6* velocity_b) {
   SectionLinearization lin;

@@ -23,6 +23,7 @@
 // negated u_a columns: only 9 of the 12 columns are computed ("reduced" columns u_a, θ_a, θ_b,
 // acting on [u_a − u_b; θ_a; θ_b]). The section tangents are most of the cost of a step.
 #include "fowtsim/beam/beam_model.hpp"
+#include "fowtsim/beam/beam_state.hpp"
 #include "fowtsim/core/types.hpp"
 
 namespace fowtsim::beam {
@@ -37,6 +38,12 @@ struct NodePose {
   Vec3 position_m;
   Mat3 orientation;
 };
+
+// The base pose of node n, or of the clamped root for n < 0.
+inline NodePose node_pose(const BeamModel& model, const BeamState& state, int n) {
+  if (n < 0) return {model.root_position_m, model.root_orientation};
+  return {state.position_m[n], state.orientation[n]};
+}
 
 // A section linearised about the base configuration.
 struct SectionLinearization {
@@ -64,6 +71,13 @@ Vec9 reduced(const Vec12& q);
 // the combination k K + c C_str the implicit step needs, at the cost of one.
 void section_tangent(const SectionLinearization& lin, const Mat6& weight, double geometric_weight,
                      Mat12& out);
+
+// The section's share of the step residual r − C w_c − K w_k without forming B, the geometric
+// part or the tangent: G (S + C B w_k + D B w_c) + (geometric part) w_k, with B and the
+// geometric part applied as the vector formulas they stand for (header, "Increments"). w_k and
+// w_c are the reduced node vectors [u_a − u_b; θ_a; θ_b]. Exact to rounding against the matrices.
+Vec12 section_residual_loads(const SectionModel& sec, const NodePose& a, const NodePose& b,
+                             const Vec9& w_k, const Vec9& w_c);
 
 // Loads only, with optional strain-rate damping D B q̇: for outputs and tests.
 Vec12 section_loads(const SectionModel& sec, const NodePose& a, const NodePose& b,

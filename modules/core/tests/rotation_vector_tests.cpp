@@ -49,3 +49,25 @@ TEST_CASE("Wiener-Milenkovic parameters are 4 tan(phi/4) along the axis", "[unit
         1e-14);
   CHECK(wiener_milenkovic(Mat3::Identity()).norm() == 0.0);
 }
+
+TEST_CASE("series and closed forms agree on both sides of their switch-over angles",
+          "[unit][rotation]") {
+  // The small-angle factors are Taylor series below 0.5 rad (0.1 for the logarithm's sine) and
+  // closed forms above. Reference: the closed forms in long double, exact to ~1e-19 here.
+  const Vec3 axis = Vec3(0.3, -0.5, 0.8).normalized();
+  for (double a : {1e-3, 0.0999, 0.1001, 0.2, 0.4999999, 0.5000001}) {
+    const long double la = a;
+    const long double sinc = std::sin(la) / la, cosc = (1 - std::cos(la)) / (la * la);
+    const long double sinc_residual = (la - std::sin(la)) / (la * la * la);
+    const long double jinv = 1 / (la * la) - (1 + std::cos(la)) / (2 * la * std::sin(la));
+    const Mat3 p = skew(a * axis);
+    const Mat3 exp_ref = Mat3::Identity() + double(sinc) * p + double(cosc) * p * p;
+    const Mat3 jr_ref = Mat3::Identity() - double(cosc) * p + double(sinc_residual) * p * p;
+    const Mat3 jinv_ref = Mat3::Identity() + 0.5 * p + double(jinv) * p * p;
+    // Rounding of a few operations on O(1) entries: 1e-15.
+    CHECK((rotation_matrix(a * axis) - exp_ref).norm() < 1e-15);
+    CHECK((right_jacobian(a * axis) - jr_ref).norm() < 1e-15);
+    CHECK((right_jacobian_inverse(a * axis) - jinv_ref).norm() < 1e-15);
+    CHECK((rotation_vector(exp_ref) - a * axis).norm() < 1e-15 * (1 + a));
+  }
+}

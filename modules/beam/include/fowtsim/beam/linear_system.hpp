@@ -41,18 +41,20 @@ enum class Inertia { included, static_only };
 void linearize(const BeamModel& model, const BeamInput& input, const BeamState& state,
                Inertia inertia, LinearizedBeam& out);
 
-// The matrix and right-hand side of an implicit step, assembled in one pass without forming M, C
-// and K apart (the section tangents are most of a step's cost; combined they are built once):
-//   A = m M + c C + k K,   b = r − C w_c − K w_k − μ M a
-struct StepCombination {
+// The matrix of an implicit step, A = m M + c C + k K, assembled in one pass without forming M, C
+// and K apart (the section tangents are most of its cost; combined they are built once).
+struct StepWeights {
   double mass = 1.0, damping = 0.0, stiffness = 0.0;  // m, c, k
-  double mass_rhs = 0.0;                               // μ
-  const VecX* damping_vector = nullptr;                // w_c (6 per node)
-  const VecX* stiffness_vector = nullptr;              // w_k
-  const VecX* acceleration = nullptr;                  // a
 };
-void assemble_step(const BeamModel& model, const BeamInput& input, const BeamState& state,
-                   const StepCombination& combination, BlockTridiagonal& lhs, VecX& rhs);
+void assemble_step_matrix(const BeamModel& model, const BeamInput& input, const BeamState& state,
+                          const StepWeights& weights, BlockTridiagonal& lhs);
+
+// The residual of the locally linear equations at a trial motion, R = r − M a − C w_c − K w_k
+// (6 per node), evaluated without forming any matrix: every product is applied as the vector
+// formula it stands for, at a fraction of the cost of assembling the matrices.
+void step_residual(const BeamModel& model, const BeamInput& input, const BeamState& state,
+                   const VecX& damping_vector, const VecX& stiffness_vector, const VecX& acceleration,
+                   VecX& residual);
 
 // Loads the beam puts on its root (force; moment about the root point), in f, including
 // strain-rate damping of the state's velocities.

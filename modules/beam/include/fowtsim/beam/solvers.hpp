@@ -50,6 +50,18 @@ struct DynamicOptions {
   // step is no longer a small-angle increment (seed §2.4: "when the incremental rotation within
   // each time-step conforms to small-angle assumptions").
   double max_increment_rad = 0.1;
+  // Reuse of generalized-α's factored step matrix A = (1−αm) M + (1−αf)γΔt C + (1−αf)βΔt² K.
+  // Every step solves A Δa = R for the change of acceleration, with R the residual of the
+  // locally linear equations (eq. 2.56) at the current base, evaluated exactly and cheaply
+  // without matrices (step_residual). A only steers that correction, so an A from a nearby base
+  // changes the result by (A_old⁻¹ A − I) Δa, second order in the step (a modified-Newton or
+  // W-method step, as CVODE reuses its Jacobian for up to 20 steps); max_age = 1 rebuilds it
+  // every step, the seed's scheme to rounding. A is rebuilt when any limit is reached:
+  int matrix_max_age = 10;                  // steps since it was built
+  double matrix_max_rotation_rad = 0.01;    // Σ over steps of the largest node rotation since
+                                            // (A's elastic part turns with the sections)
+  double matrix_max_frame_change = 1e-3;    // change of A's frame-motion part (Coriolis 2mΩ̃,
+                                            // m(Ω̇̃ + Ω̃²)) relative to its mass part [-]
   double erk_relative_tolerance = 1e-6;   // seed §2.5: ode45 RelTol
   double erk_absolute_tolerance = 1e-12;  // on increments [m, rad] and their rates
 };
@@ -76,12 +88,18 @@ class DynamicStepper {
 
  private:
   void integrate_generalized_alpha(const BeamInput& input, const BeamState& state, double dt);
+  bool step_matrix_is_stale(const FrameKinematics& frame, const StepWeights& weights) const;
   void integrate_erk(const BeamInput& input, const BeamState& state, double dt);
 
   const BeamModel& model_;
   DynamicOptions options_;
   LinearizedBeam system_;
-  BlockTridiagonal lhs_;
+  BlockTridiagonal lhs_;  // factored step matrix A, reused while fresh
+  bool matrix_valid_ = false;
+  int matrix_age_ = 0;                // steps taken with it
+  double turned_since_matrix_ = 0.0;  // Σ of each step's largest node rotation since it was built [rad]
+  StepWeights matrix_weights_;
+  FrameKinematics matrix_frame_;
   VecX v0_, a0_, q_, v1_, a1_, w_damping_, w_stiffness_;
   std::unique_ptr<Erk> erk_;
 };

@@ -1,0 +1,90 @@
+// R = r − M a − C w_c − K w_k of linear_system.hpp without the matrices. Each term below is the
+// vector form of a block built in linear_system.cpp (add_node_inertia, add_dead_load) or in
+// section_mechanics.cpp; the unit test "the matrix-free step residual equals the assembled one"
+// holds them together to rounding.
+#include "fowtsim/beam/linear_system.hpp"
+
+#include <Eigen/Geometry>
+
+#include "section_mechanics.hpp"
+
+namespace fowtsim::beam {
+namespace {
+
+// Node n's own share: inertia about the node in the moving frame (eqs. 2.57–2.66, see
+// linear_system.hpp) and dead loads at their arms. With c the mass-centre offset, A v =
+// Ω̇ × v + Ω × (Ω × v), p(v) = v_u − c × v_θ (the mass centre's part of a node motion v) and
+// I_G = J_P + m c̃ c̃ᵀ the inertia about the mass centre:
+//   M v = [m p; m c × v_u + J_P v_θ] = [m p; c × m p + I_G v_θ]
+//   C v = [2m Ω × p; c × (2m Ω × p) + Ω × (I_G v_θ) − (I_G Ω) × v_θ + I_G (Ω × v_θ)] + μ_M M v
+//   K v = [m A p; c × (m A p) + m a_0 × (c × v_θ) + Ω × (I_G (Ω × v_θ)) − Ω × ((I_G Ω) × v_θ)
+//          + I_G (Ω̇ × v_θ) − (I_G Ω̇) × v_θ − Σ f × (arm × v_θ)]
+// The three translational parts share the moment arm c and the I_G products are merged, so the
+// node costs four 3×3 products.
+Vec6 node_residual(const BeamModel& model, const BeamInput& input, const BeamState& state, int n,
+                   const Vec6& a, const Vec6& w_c, const Vec6& w_k) {
+  const NodeModel& node = model.nodes[n];
+  const Mat3& r = state.orientation[n];
+  const FrameKinematics& frame = input.frame;
+  const double m = node.mass_kg;
+  const Vec3 c = r * node.mass_offset_m;
+  Mat3 i_g = r * node.inertia_kg_m2 * r.transpose() + m * c * c.transpose();
+  i_g.diagonal().array() -= m * c.squaredNorm();
+  const Vec3& w = frame.angular_velocity_rad_s;
+  const Vec3& w_dot = frame.angular_acceleration_rad_s2;
+  const auto frame_a = [&](const Vec3& v) -> Vec3 { return w_dot.cross(v) + w.cross(w.cross(v)); };
+  const Vec3 a0 = frame.acceleration_m_s2 - frame.gravity_m_s2 + frame_a(state.position_m[n] + c);
+  const Vec3 i_w = i_g * w, i_w_dot = i_g * w_dot;
+
+  const Vec6 mass_weighted = a + model.mass_damping_1_s * w_c;  // − M (a + μ_M w_c)
+  const Vec3 th_m = mass_weighted.tail<3>(), th_c = w_c.tail<3>(), th_k = w_k.tail<3>();
+  const Vec3 c_th = c.cross(th_k);
+  // m a_0 (frame), m p(a + μ_M w_c) (mass), 2m Ω × p(w_c) (Coriolis), m A p(w_k) (stiffness)
+  const Vec3 translational = m * (a0 + mass_weighted.head<3>() - c.cross(th_m) +
+                                  2.0 * w.cross(w_c.head<3>() - c.cross(th_c)) + frame_a(w_k.head<3>() - c_th));
+  Vec3 force = -translational;
+  Vec3 moment = -(c.cross(translational) + w.cross(i_w) + i_w_dot + i_g * (th_m + w.cross(th_c) + w_dot.cross(th_k)) +
+                  w.cross(i_g * (th_c + w.cross(th_k))) + m * a0.cross(c_th) - i_w.cross(th_c) -
+                  w.cross(i_w.cross(th_k)) - i_w_dot.cross(th_k));
+  auto dead_load = [&](const Vec6& load, const Vec3& arm) {
+    force += load.head<3>();
+    moment += load.tail<3>() + arm.cross(load.head<3>()) + load.head<3>().cross(arm.cross(th_k));
+  };
+  if (!input.node_loads.empty()) dead_load(input.node_loads[n], r * node.load_arm_m);
+  if (n == model.node_count() - 1) dead_load(input.tip_load, r * model.tip_arm_m);
+  Vec6 out;
+  out << force, moment;
+  return out;
+}
+
+// [u_a − u_b; θ_a; θ_b] of a nodal vector, node a < 0 being the clamped root (zero).
+Vec9 reduced_pair(const VecX& q, int a, int b) {
+  Vec9 out;
+  out.head<3>() = -q.segment<3>(6 * b);
+  if (a >= 0) {
+    out.head<3>() += q.segment<3>(6 * a);
+    out.segment<3>(3) = q.segment<3>(6 * a + 3);
+  } else {
+    out.segment<3>(3).setZero();
+  }
+  out.tail<3>() = q.segment<3>(6 * b + 3);
+  return out;
+}
+
+}  // namespace
+
+void step_residual(const BeamModel& model, const BeamInput& input, const BeamState& state,
+                   const VecX& w_c, const VecX& w_k, const VecX& a, VecX& residual) {
+  for (int n = 0; n < model.node_count(); ++n)
+    residual.segment<6>(6 * n) = node_residual(model, input, state, n, a.segment<6>(6 * n),
+                                               w_c.segment<6>(6 * n), w_k.segment<6>(6 * n));
+  for (const SectionModel& sec : model.sections) {
+    const int ia = sec.inboard, ib = sec.outboard;
+    const Vec12 loads = section_residual_loads(sec, node_pose(model, state, ia), node_pose(model, state, ib),
+                                               reduced_pair(w_k, ia, ib), reduced_pair(w_c, ia, ib));
+    residual.segment<6>(6 * ib) += loads.tail<6>();
+    if (ia >= 0) residual.segment<6>(6 * ia) += loads.head<6>();
+  }
+}
+
+}  // namespace fowtsim::beam
