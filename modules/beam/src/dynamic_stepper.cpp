@@ -100,7 +100,7 @@ void DynamicStepper::integrate_generalized_alpha(const BeamInput& input, const B
   w_stiffness_ = ((1.0 - af) * dt) * v0_ + (0.5 * (1.0 - af) * dt * dt) * a0_;
   step_residual(model_, input, state, w_damping_, w_stiffness_, a0_, a1_);  // R, solved in place
   const StepWeights weights{1.0 - am, (1.0 - af) * gamma * dt, (1.0 - af) * beta * dt * dt};
-  if (step_matrix_is_stale(input.frame, weights)) {
+  if (step_matrix_is_stale(weights)) {
     assemble_step_matrix(model_, input, state, weights, lhs_);
     if (!lhs_.factor())
       throw NumericalError({"beam", std::nullopt, "step matrix", "check the mass and inertia of the beam"},
@@ -109,7 +109,6 @@ void DynamicStepper::integrate_generalized_alpha(const BeamInput& input, const B
     matrix_age_ = 0;
     turned_since_matrix_ = 0.0;
     matrix_weights_ = weights;
-    matrix_frame_ = input.frame;
   }
   lhs_.solve_in_place(a1_);
   a1_ += a0_;
@@ -117,22 +116,10 @@ void DynamicStepper::integrate_generalized_alpha(const BeamInput& input, const B
   v1_ = v0_ + dt * ((1.0 - gamma) * a0_ + gamma * a1_);
 }
 
-// The frame motion enters A per unit mass as c·2Ω̃ + k·(Ω̇̃ + Ω̃²) beside the mass part m·I
-// (StepWeights m, c, k), so its change since the build, relative to m, is bounded by
-//   (2c |ΔΩ| + k (|ΔΩ̇| + |ΔΩ| (|Ω| + |Ω_A|))) / m.
-bool DynamicStepper::step_matrix_is_stale(const FrameKinematics& frame, const StepWeights& w) const {
-  if (!matrix_valid_ || matrix_age_ >= options_.matrix_max_age ||
-      turned_since_matrix_ > options_.matrix_max_rotation_rad)
-    return true;
-  if (w.mass != matrix_weights_.mass || w.damping != matrix_weights_.damping ||
-      w.stiffness != matrix_weights_.stiffness)
-    return true;  // Δt changed
-  const Vec3& om = frame.angular_velocity_rad_s;
-  const Vec3& om_a = matrix_frame_.angular_velocity_rad_s;
-  const double d_om = (om - om_a).norm();
-  const double d_om_dot = (frame.angular_acceleration_rad_s2 - matrix_frame_.angular_acceleration_rad_s2).norm();
-  const double change = (2.0 * w.damping * d_om + w.stiffness * (d_om_dot + d_om * (om.norm() + om_a.norm()))) / w.mass;
-  return change > options_.matrix_max_frame_change;
+bool DynamicStepper::step_matrix_is_stale(const StepWeights& w) const {
+  return !matrix_valid_ || matrix_age_ >= options_.matrix_max_age ||
+         turned_since_matrix_ > options_.matrix_max_rotation_rad || w.mass != matrix_weights_.mass ||
+         w.damping != matrix_weights_.damping || w.stiffness != matrix_weights_.stiffness;
 }
 
 void DynamicStepper::integrate_erk(const BeamInput& input, const BeamState& state, double dt) {
