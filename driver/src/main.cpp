@@ -89,6 +89,11 @@ int main(int argc, char** argv) {
   std::string integrator;
   run->add_option("--segments", segments, "finite volumes per beam (BeamDyn cases; default 48)")->check(CLI::PositiveNumber);
   run->add_option("--integrator", integrator, "beam step integrator")->check(CLI::IsMember({"generalized_alpha", "erk"}));
+  int matrix_age = 0;
+  run->add_option("--matrix-age", matrix_age,
+                  "generalized-α: rebuild the beam step matrix at least every N steps (1 = every step, "
+                  "the seed's scheme; default 20)")
+      ->check(CLI::PositiveNumber);
 
   std::string ref, test, tolerance_file;
   std::vector<std::string> channels;
@@ -143,6 +148,7 @@ int main(int argc, char** argv) {
       if (tmax > 0) request.t_max_s = tmax;
       if (segments > 0) request.beam_segments = segments;
       if (!integrator.empty()) request.beam_integrator = integrator;
+      if (matrix_age > 0) request.beam_matrix_max_age = matrix_age;
       return run_command(request);
     }
     if (*compare) {

@@ -42,13 +42,15 @@ Moments moments(const std::vector<double>& v) {
 
 BeamDynRun run_beamdyn_reference(const std::filesystem::path& driver_inp, const std::filesystem::path& reference_out,
                                  int segments, const std::filesystem::path& output_base,
-                                 const std::optional<std::string>& integrator) {
+                                 const std::optional<std::string>& integrator,
+                                 const std::optional<int>& matrix_max_age) {
   RunRequest request;
   request.deck_path = driver_inp;
   request.output_base = output_base;
   request.output_format = "out";
   request.beam_segments = segments;
   request.beam_integrator = integrator;
+  request.beam_matrix_max_age = matrix_max_age;
   const RunReport report = run_scene(request, {});
   BeamDynRun run;
   run.ours = io::read_channels(output_base.string() + ".out");

@@ -20,7 +20,8 @@ struct BeamDynRun {
 // Runs driver_inp with `segments` finite volumes, writing `output_base`.out, and reads both files.
 BeamDynRun run_beamdyn_reference(const std::filesystem::path& driver_inp, const std::filesystem::path& reference_out,
                                  int segments, const std::filesystem::path& output_base,
-                                 const std::optional<std::string>& integrator = std::nullopt);
+                                 const std::optional<std::string>& integrator = std::nullopt,
+                                 const std::optional<int>& matrix_max_age = std::nullopt);
 
 // Last-row value of a channel; throws Error if the channel is missing.
 double final_value(const io::ChannelTable& table, std::string_view channel);

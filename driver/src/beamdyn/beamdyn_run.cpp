@@ -55,6 +55,7 @@ RunReport run_beamdyn_case(const RunRequest& request, const ProgressCallback& pr
   SingleBeamRun how;
   how.segments = request.beam_segments.value_or(48);
   how.integrator = request.beam_integrator.value_or("generalized_alpha");
+  how.matrix_max_age = request.beam_matrix_max_age.value_or(how.matrix_max_age);
   how.channels = setup.out_list;
   how.scene = "beamdyn_driver";
   return run_single_beam(setup, how, request, progress);
@@ -96,9 +97,11 @@ RunReport run_single_beam(const BeamDynSetup& setup_in, const SingleBeamRun& how
   beam::DynamicOptions options;
   options.integrator = beam::integrator_from_name(how.integrator);
   options.spectral_radius = setup.spectral_radius;
+  options.matrix_max_age = how.matrix_max_age;
   metadata.extra = {{"scene", how.scene},
                     {"beam_segments", std::to_string(how.segments)},
-                    {"beam_integrator", beam::integrator_name(options.integrator)}};
+                    {"beam_integrator", beam::integrator_name(options.integrator)},
+                    {"beam_matrix_max_age", std::to_string(options.matrix_max_age)}};
   outputs.begin(written, metadata);
 
   beam::BeamState state = beam::make_state(model);

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "fowtsim/beam/solvers.hpp"
 #include "run/run_types.hpp"
 
 namespace fowtsim::driver {
@@ -19,6 +20,7 @@ struct BeamDynSetup;
 struct SingleBeamRun {
   int segments = 48;
   std::string integrator = "generalized_alpha";
+  int matrix_max_age = beam::DynamicOptions{}.matrix_max_age;  // generalized-α step-matrix reuse
   std::vector<std::string> channels;  // BeamDyn channel names to write; empty = all
   bool skip_unknown_channels = true;  // BeamDyn OutList: warn and skip; YAML decks check before
   long decimation = 1;                // write every k-th step

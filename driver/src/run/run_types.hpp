@@ -15,6 +15,7 @@ struct RunRequest {
   std::optional<double> t_max_s;                     // --tmax: overrides simulation.t_max_s [s]
   std::optional<int> beam_segments;                  // --segments: finite volumes per beam
   std::optional<std::string> beam_integrator;        // --integrator: generalized_alpha | erk
+  std::optional<int> beam_matrix_max_age;            // --matrix-age: generalized-α step-matrix reuse
 };
 
 struct RunReport {

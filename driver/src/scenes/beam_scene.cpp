@@ -135,6 +135,7 @@ RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& prog
   SingleBeamRun how;
   how.segments = request.beam_segments.value_or(static_cast<int>(b.integer("segments")));
   how.integrator = request.beam_integrator.value_or(b.string("integrator"));
+  how.matrix_max_age = request.beam_matrix_max_age.value_or(how.matrix_max_age);
   how.skip_unknown_channels = false;
   how.scene = "beam";
   how.deck_hash = deck.hash();
