@@ -6,7 +6,8 @@
 //    (§2.4.3), with either integrator of the locally linear system:
 //      - generalized_alpha: Chung–Hulbert generalized-α, A-stable and second order with
 //        high-frequency dissipation set by the spectral radius ρ∞ (ρ∞ = 1: average acceleration,
-//        no dissipation); one block-tridiagonal factorisation per step;
+//        no dissipation); one block-tridiagonal solve per step against a factorised step matrix
+//        that is rebuilt when it grows stale (DynamicOptions::matrix_max_*);
 //      - erk: SUNDIALS ARKODE explicit Dormand–Prince 5(4) with adaptive internal steps, the
 //        seed's ode45 setting (relative tolerance 1e-6) — the reference.
 #include <memory>
