@@ -21,7 +21,7 @@
 //
 // A rigid translation strains nothing, so the u_b columns of B and of every tangent are the
 // negated u_a columns: only 9 of the 12 columns are computed ("reduced" columns u_a, θ_a, θ_b,
-// acting on [u_a − u_b; θ_a; θ_b]). The section tangents are most of the cost of a step.
+// acting on [u_a − u_b; θ_a; θ_b]). The section tangents are most of the cost of a step matrix.
 #include "fowtsim/beam/beam_model.hpp"
 #include "fowtsim/beam/beam_state.hpp"
 #include "fowtsim/core/types.hpp"

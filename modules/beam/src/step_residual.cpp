@@ -1,7 +1,7 @@
 // R = r − M a − C w_c − K w_k of linear_system.hpp without the matrices. Each term below is the
 // vector form of a block built in linear_system.cpp (add_node_inertia, add_dead_load) or in
-// section_mechanics.cpp; the unit test "the matrix-free step residual equals the assembled one"
-// holds them together to rounding.
+// section_mechanics.cpp; the unit test "the one-pass step matrix and the matrix-free residual
+// equal the assembled system" holds them together to rounding.
 #include "fowtsim/beam/linear_system.hpp"
 
 #include <Eigen/Geometry>
@@ -14,7 +14,7 @@ namespace {
 // Node n's own share: inertia about the node in the moving frame (eqs. 2.57–2.66, see
 // linear_system.hpp) and dead loads at their arms. With c the mass-centre offset, A v =
 // Ω̇ × v + Ω × (Ω × v), p(v) = v_u − c × v_θ (the mass centre's part of a node motion v) and
-// I_G = J_P + m c̃ c̃ᵀ the inertia about the mass centre:
+// I_G = J_P + m c̃ c̃ the inertia about the mass centre:
 //   M v = [m p; m c × v_u + J_P v_θ] = [m p; c × m p + I_G v_θ]
 //   C v = [2m Ω × p; c × (2m Ω × p) + Ω × (I_G v_θ) − (I_G Ω) × v_θ + I_G (Ω × v_θ)] + μ_M M v
 //   K v = [m A p; c × (m A p) + m a_0 × (c × v_θ) + Ω × (I_G (Ω × v_θ)) − Ω × ((I_G Ω) × v_θ)

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-
+#include <cstddef>
 
 namespace fowtsim {
 namespace {
@@ -38,7 +38,7 @@ constexpr double kJacobianInverse[] = {1.0 / 12, 1.0 / 720, 1.0 / 30240, 1.0 / 1
 // asin(s)/s = Σ (2k)! / (4^k (k!)² (2k+1)) s^{2k}: the angle from 2 sin a = |axial part| of r.
 constexpr double kAsinOverSin[] = {1.0, 1.0 / 6, 3.0 / 40, 5.0 / 112, 35.0 / 1152, 63.0 / 2816, 231.0 / 13312,
                                    143.0 / 10240, 6435.0 / 557056};
-constexpr double kAsinSeriesSine = 0.1;  // s⁹ term < 1e-20 below this
+constexpr double kAsinSeriesSine = 0.1;  // below it the first dropped term (s¹⁸) is < 1e-20
 
 // I + f φ̃ + g φ̃², with φ̃² = φφᵀ − a² I written out (no 3×3 product): the common form of the
 // exponential and both Jacobians.
