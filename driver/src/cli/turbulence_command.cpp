@@ -15,20 +15,8 @@ namespace {
 
 io::TurbSimField to_turbsim(const wind::FullField& f, const std::string& description) {
   io::TurbSimField t;
-  t.nz = f.nz;
-  t.ny = f.ny;
-  t.n_tower = f.n_tower;
-  t.nt = f.nt;
-  t.dz_m = f.dz_m;
-  t.dy_m = f.dy_m;
-  t.dt_s = f.dt_s;
-  t.u_hub_m_s = f.u_hub_m_s;
-  t.z_hub_m = f.z_hub_m;
-  t.z_bottom_m = f.z_bottom_m;
-  t.periodic = f.periodic;
+  static_cast<WindGrid&>(t) = f;
   t.description = description;
-  t.grid = f.grid;
-  t.tower = f.tower;
   return t;
 }
 

@@ -16,21 +16,8 @@ std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p) {
   if (p.model == wind::WindModel::turbulent)
     return std::make_shared<wind::WindField>(p, std::make_shared<wind::FullField>(wind::generate_turbulence(p).field));
   if (p.model != wind::WindModel::bts) return std::make_shared<wind::WindField>(p);
-  const io::TurbSimField t = io::read_turbsim_bts(p.file);
   auto f = std::make_shared<wind::FullField>();
-  f->ny = t.ny;
-  f->nz = t.nz;
-  f->n_tower = t.n_tower;
-  f->nt = t.nt;
-  f->dy_m = t.dy_m;
-  f->dz_m = t.dz_m;
-  f->dt_s = t.dt_s;
-  f->z_bottom_m = t.z_bottom_m;
-  f->z_hub_m = t.z_hub_m;
-  f->u_hub_m_s = t.u_hub_m_s;
-  f->periodic = t.periodic;
-  f->grid = t.grid;
-  f->tower = t.tower;
+  static_cast<WindGrid&>(*f) = io::read_turbsim_bts(p.file);  // the file's grid; its description is dropped
   return std::make_shared<wind::WindField>(p, f);
 }
 

@@ -17,19 +17,7 @@ namespace {
 
 std::shared_ptr<const FullField> to_full_field(io::TurbSimField&& t) {
   auto f = std::make_shared<FullField>();
-  f->ny = t.ny;
-  f->nz = t.nz;
-  f->n_tower = t.n_tower;
-  f->nt = t.nt;
-  f->dy_m = t.dy_m;
-  f->dz_m = t.dz_m;
-  f->dt_s = t.dt_s;
-  f->z_bottom_m = t.z_bottom_m;
-  f->z_hub_m = t.z_hub_m;
-  f->u_hub_m_s = t.u_hub_m_s;
-  f->periodic = t.periodic;
-  f->grid = std::move(t.grid);
-  f->tower = std::move(t.tower);
+  static_cast<WindGrid&>(*f) = std::move(t);
   return f;
 }
 

@@ -19,25 +19,13 @@
 #include <string>
 #include <vector>
 
+#include "fowtsim/core/wind_grid.hpp"
+
 namespace fowtsim::io {
 
-// Plain arrays of a full-field wind (the same layout as fowtsim::wind::FullField, which the driver
-// builds from it; io does not depend on wind).
-struct TurbSimField {
-  int nz = 0;                // grid points vertically [-]
-  int ny = 0;                // grid points across [-]
-  int n_tower = 0;           // tower points below the grid [-]
-  int nt = 0;                // time steps [-]
-  double dz_m = 0.0;         // vertical spacing [m]
-  double dy_m = 0.0;         // lateral spacing [m]
-  double dt_s = 0.0;         // time step [s]
-  double u_hub_m_s = 0.0;    // hub mean speed (InflowWind's advection speed) [m/s]
-  double z_hub_m = 0.0;      // hub height [m]
-  double z_bottom_m = 0.0;   // height of the lowest grid row [m]
-  bool periodic = false;     // format id 8 (true) or 7 (false)
-  std::string description;   // free text (<= 200 characters kept by OpenFAST)
-  std::vector<float> grid;   // (nt, nz, ny, 3) [m/s]; index ((it·nz+iz)·ny+iy)·3+c, wind frame u, v, w
-  std::vector<float> tower;  // (nt, n_tower, 3) [m/s]
+// A .bts file's field (core's WindGrid, shared with wind::FullField) and its description line.
+struct TurbSimField : WindGrid {
+  std::string description;  // free text (<= 200 characters kept by OpenFAST)
 };
 
 // Reads a .bts file; throws InputError (module "io.turbsim") naming the file on any inconsistency

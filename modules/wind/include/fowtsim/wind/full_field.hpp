@@ -1,7 +1,7 @@
 #pragma once
 // A full-field (grid) wind: velocities on a y–z grid at equally spaced times, advected downwind
 // by Taylor's frozen-turbulence hypothesis — the data of a TurbSim .bts file or of our generator.
-// Built from plain arrays (the .bts reader lives in fowtsim::io, which this module does not use).
+// The data is core's WindGrid, which fowtsim::io reads from .bts files (this module does not use io).
 //
 // InflowWind's conventions, which we follow (sources: OpenFAST InflowWind_IO.f90, IfW_TurbSim_Init,
 // OpenFAST v3.5+/v5; InflowWind User's Guide, Platt, Jonkman & Jonkman 2016, "Taylor's frozen
@@ -24,24 +24,12 @@
 #include <vector>
 
 #include "fowtsim/core/types.hpp"
+#include "fowtsim/core/wind_grid.hpp"
 
 namespace fowtsim::wind {
 
-struct FullField {
-  int ny = 0;                // grid points across [-]
-  int nz = 0;                // grid points vertically [-]
-  int n_tower = 0;           // tower points below the grid [-] (0: none)
-  int nt = 0;                // time samples [-]
-  double dy_m = 0.0;         // lateral spacing [m]
-  double dz_m = 0.0;         // vertical spacing [m]
-  double dt_s = 0.0;         // time step [s]
-  double z_bottom_m = 0.0;   // height of the lowest grid row above SWL [m]
-  double z_hub_m = 0.0;      // hub (reference) height [m]
-  double u_hub_m_s = 0.0;    // mean hub speed = advection speed of Taylor's hypothesis [m/s]
-  bool periodic = false;     // true: record wraps (TurbSim id 8); false: id 7
-  std::vector<float> grid;   // (nt, nz, ny, 3) u, v, w in the wind frame [m/s]; index ((it·nz+iz)·ny+iy)·3+c
-  std::vector<float> tower;  // (nt, n_tower, 3) [m/s]; index (it·n_tower+k)·3+c
-
+// The grid (core/wind_grid.hpp) with the geometry InflowWind derives from it.
+struct FullField : WindGrid {
   double half_width_m() const { return 0.5 * (ny - 1) * dy_m; }
   double top_m() const { return z_bottom_m + (nz - 1) * dz_m; }
   // Covered time: nt·dt periodic, (nt−1)·dt otherwise [s].
