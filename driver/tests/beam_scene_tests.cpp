@@ -9,23 +9,14 @@
 #include "fowtsim/io/readers.hpp"
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
+#include "run_request.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
 
-namespace {
-RunRequest request_for(const std::filesystem::path& deck, const std::filesystem::path& base) {
-  RunRequest r;
-  r.deck_path = deck;
-  r.output_base = base;
-  r.output_format = std::string("out");
-  return r;
-}
-}  // namespace
-
 TEST_CASE("the roll-up beam deck closes its circle", "[verification][beam_scene]") {
   const auto dir = testing::scratch_dir("beam_scene_rollup");
-  run_scene(request_for(testing::source_dir() / "inputs/beams/rollup.yaml", dir / "rollup"), nullptr);
+  run_scene(run_request(testing::source_dir() / "inputs/beams/rollup.yaml", dir / "rollup"), nullptr);
   const io::ChannelTable t = io::read_channels(dir / "rollup.out");
   // Exact: the tip returns to the root (TipTDz = −L, TipTDy = 0), turned by 2π (TipRD = 0); the
   // root moment equals the applied 4π. 100 second-order volumes: measured 1.2e-6 m.
@@ -42,7 +33,7 @@ TEST_CASE("bad beam decks stop before the run with file, line and key", "[unit][
   SECTION("a stiffness matrix with 35 entries") {
     std::ofstream(deck) << "simulation: {analysis: static}\nbeam:\n  key_points_m: [[0,0,0],[0,0,1]]\n  twist_deg: [0, 0]\n  stations:\n"
                            "    - {eta: 0, stiffness: [1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1], mass: [1,0,0,0,0,0, 0,1,0,0,0,0, 0,0,1,0,0,0, 0,0,0,1,0,0, 0,0,0,0,1,0, 0,0,0,0,0,1]}\n";
-    CHECK_THROWS_WITH(run_scene(request_for(deck, dir / "run"), nullptr),
+    CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run"), nullptr),
                       Catch::Contains("beam.yaml:6") && Catch::Contains("beam.stations[0].stiffness"));
     CHECK_FALSE(std::filesystem::exists(dir / "run.out"));
   }
@@ -50,7 +41,7 @@ TEST_CASE("bad beam decks stop before the run with file, line and key", "[unit][
     std::ofstream(deck) << "simulation: {analysis: static}\nbeam:\n  key_points_m: [[0,0,0],[0,0,0.5],[0,0,1]]\n  twist_deg: [0, 0]\n  stations:\n"
                            "    - {eta: 0, stiffness: [1,0,0,0,0,0, 0,1,0,0,0,0, 0,0,1,0,0,0, 0,0,0,1,0,0, 0,0,0,0,1,0, 0,0,0,0,0,1],"
                            " mass: [1,0,0,0,0,0, 0,1,0,0,0,0, 0,0,1,0,0,0, 0,0,0,1,0,0, 0,0,0,0,1,0, 0,0,0,0,0,1]}\n";
-    CHECK_THROWS_WITH(run_scene(request_for(deck, dir / "run"), nullptr),
+    CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run"), nullptr),
                       Catch::Contains("beam.yaml:4") && Catch::Contains("beam.twist_deg"));
   }
   SECTION("an unknown output channel") {
@@ -58,7 +49,7 @@ TEST_CASE("bad beam decks stop before the run with file, line and key", "[unit][
                            "beam:\n  key_points_m: [[0,0,0],[0,0,1]]\n  twist_deg: [0, 0]\n  stations:\n"
                            "    - {eta: 0, stiffness: [1,0,0,0,0,0, 0,1,0,0,0,0, 0,0,1,0,0,0, 0,0,0,1,0,0, 0,0,0,0,1,0, 0,0,0,0,0,1],"
                            " mass: [1,0,0,0,0,0, 0,1,0,0,0,0, 0,0,1,0,0,0, 0,0,0,1,0,0, 0,0,0,0,1,0, 0,0,0,0,0,1]}\n";
-    CHECK_THROWS_WITH(run_scene(request_for(deck, dir / "run"), nullptr),
+    CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run"), nullptr),
                       Catch::Contains("beam.yaml:2") && Catch::Contains("OoPDefl1"));
   }
 }
@@ -75,7 +66,7 @@ TEST_CASE("OpenFAST channel names carry the same loads and deflections in their 
                          "    - {eta: 0, stiffness: [1e4,0,0,0,0,0, 0,1e4,0,0,0,0, 0,0,1e4,0,0,0, 0,0,0,2,0,0, 0,0,0,0,2,0, 0,0,0,0,0,2],"
                          " mass: [1,0,0,0,0,0, 0,1,0,0,0,0, 0,0,1,0,0,0, 0,0,0,0.1,0,0, 0,0,0,0,0.1,0, 0,0,0,0,0,0.2]}\n"
                          "loads: {tip_moment_N_m: [3.141592653589793, 0, 0]}\n";
-  run_scene(request_for(deck, dir / "run"), nullptr);
+  run_scene(run_request(deck, dir / "run"), nullptr);
   const io::ChannelTable t = io::read_channels(dir / "run.out");
   auto last = [&](const char* ch) { return t.columns[*t.find(ch)].back(); };
   const double pi = 3.14159265358979323846;

@@ -9,6 +9,7 @@
 #include "fowtsim/io/readers.hpp"
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
+#include "run_request.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -40,10 +41,7 @@ TEST_CASE("OC3-Hywind in steady wind settles at rated speed with the published p
     std::ofstream(deck) << "include: [" << (testing::source_dir() / "inputs/oc3_hywind/turbine_steady_15mps.yaml").string() << "]\n"
                         << "simulation: {t_max_s: 250.0, dt_s: 0.0125}\noutput: {format: out, decimation: 8}\n"
                         << "wind: {model: steady, speed_m_s: " << p.wind << ", reference_height_m: 90.0}\n";
-    RunRequest r;
-    r.deck_path = deck;
-    r.output_base = dir / "run";
-    run_scene(r, nullptr);
+    run_scene(run_request(deck, dir / "run", std::nullopt), nullptr);
     const io::ChannelTable t = io::read_channels(dir / "run.out");
     INFO(p.wind << " m/s: pitch " << mean_after(t, "BldPitch1", 200.0) << "°, rotor " << mean_after(t, "RotSpeed", 200.0) << " rpm");
     // Issue 6: within 0.5° of the table. The table is the land-based turbine; on the spar the

@@ -10,6 +10,7 @@
 #include "fowtsim/io/readers.hpp"
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
+#include "run_request.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -42,11 +43,9 @@ TEST_CASE("OC3-Hywind free-decay periods", "[verification][floating_scene]") {
   const DecayCase cases[] = {{"surge", "PtfmSurge", 0.0080}, {"heave", "PtfmHeave", 0.0324},
                              {"pitch", "PtfmPitch", 0.0343}, {"yaw", "PtfmYaw", 0.1210}};
   for (const DecayCase& c : cases) {
-    RunRequest r;
-    r.deck_path = testing::source_dir() / "inputs/oc3_hywind" / (std::string("free_decay_") + c.name + ".yaml");
-    r.output_base = dir / c.name;
-    r.output_format = std::string("out");
-    run_scene(r, nullptr);
+    run_scene(run_request(testing::source_dir() / "inputs/oc3_hywind" / (std::string("free_decay_") + c.name + ".yaml"),
+                          dir / c.name),
+              nullptr);
     const io::ChannelTable ours = io::read_channels(dir / (std::string(c.name) + ".out"));
     const double period = mean_period(ours.time(), ours.columns[*ours.find(c.channel)]);
     INFO(c.name << ": period " << period << " s, published " << 1.0 / c.published_hz << " s");
@@ -61,11 +60,9 @@ TEST_CASE("OC3-Hywind free decay against the OpenFAST runs", "[verification][flo
   const auto dir = testing::scratch_dir("free_decay_vs_openfast");
   const DecayCase cases[] = {{"surge", "PtfmSurge", 0}, {"heave", "PtfmHeave", 0}, {"pitch", "PtfmPitch", 0}, {"yaw", "PtfmYaw", 0}};
   for (const DecayCase& c : cases) {
-    RunRequest r;
-    r.deck_path = testing::source_dir() / "inputs/oc3_hywind" / (std::string("free_decay_") + c.name + ".yaml");
-    r.output_base = dir / c.name;
-    r.output_format = std::string("out");
-    run_scene(r, nullptr);
+    run_scene(run_request(testing::source_dir() / "inputs/oc3_hywind" / (std::string("free_decay_") + c.name + ".yaml"),
+                          dir / c.name),
+              nullptr);
     const io::ChannelTable ours = io::read_channels(dir / (std::string(c.name) + ".out"));
     const io::ChannelTable theirs = io::read_channels(ref_dir / c.name / (std::string("oc3_decay_") + c.name + ".out"));
     const double p_ours = mean_period(ours.time(), ours.columns[*ours.find(c.channel)]);

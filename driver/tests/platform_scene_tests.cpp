@@ -9,19 +9,12 @@
 #include "fowtsim/io/readers.hpp"
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
+#include "run_request.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
 
 namespace {
-
-RunRequest request_for(const std::filesystem::path& deck, const std::filesystem::path& base) {
-  RunRequest r;
-  r.deck_path = deck;
-  r.output_base = base;
-  r.output_format = std::string("out");
-  return r;
-}
 
 double last(const io::ChannelTable& t, const char* name) { return t.columns[*t.find(name)].back(); }
 
@@ -38,7 +31,7 @@ std::filesystem::path oc3_deck(const std::filesystem::path& dir, const std::stri
 
 TEST_CASE("OC3-Hywind decks at rest in still water give the OC3 reference loads", "[verification][platform_scene]") {
   const auto dir = testing::scratch_dir("platform_scene_rest");
-  run_scene(request_for(oc3_deck(dir, "simulation: {t_max_s: 1.0, dt_s: 0.5}\nplatform_motion: {}\n"), dir / "rest"), nullptr);
+  run_scene(run_request(oc3_deck(dir, "simulation: {t_max_s: 1.0, dt_s: 0.5}\nplatform_motion: {}\n"), dir / "rest"), nullptr);
   const io::ChannelTable t = io::read_channels(dir / "rest.out");
   // Buoyancy ρ g V with HydroDyn's PtfmVol0 = 8029.21 m³ (PUBLISHED.md): exact geometry, so the
   // .out's 10 significant digits and the 6-digit published volume bound the difference (1e-6).
@@ -63,8 +56,8 @@ TEST_CASE("a platform run in irregular waves is deterministic", "[unit][platform
       "waves: {model: jonswap, hs_m: 6.0, tp_s: 10.0, seed: 7, duration_s: 600.0, dt_s: 0.25, depth_m: 320.0}\n"
       "platform_motion: {harmonic: [{dof: surge, amplitude: 5.0, period_s: 125.0}, {dof: pitch, amplitude: 2.0, period_s: 29.5}]}\n";
   const auto deck = oc3_deck(dir, body);
-  run_scene(request_for(deck, dir / "a"), nullptr);
-  run_scene(request_for(deck, dir / "b"), nullptr);
+  run_scene(run_request(deck, dir / "a"), nullptr);
+  run_scene(run_request(deck, dir / "b"), nullptr);
   const io::ChannelTable a = io::read_channels(dir / "a.out"), b = io::read_channels(dir / "b.out");
   REQUIRE(a.columns.size() == b.columns.size());
   for (std::size_t c = 0; c < a.columns.size(); ++c) CHECK(a.columns[c] == b.columns[c]);
@@ -77,18 +70,18 @@ TEST_CASE("bad platform decks stop before the run with file, line and key", "[un
   const auto dir = testing::scratch_dir("platform_scene_bad");
   SECTION("an unknown DOF") {
     const auto deck = oc3_deck(dir, "platform_motion:\n  harmonic: [{dof: surgee, amplitude: 1, period_s: 10}]\nsimulation: {}\n");
-    CHECK_THROWS_WITH(run_scene(request_for(deck, dir / "run"), nullptr),
+    CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run"), nullptr),
                       Catch::Contains("scene.yaml:3") && Catch::Contains("platform_motion.harmonic[0].dof"));
     CHECK_FALSE(std::filesystem::exists(dir / "run.out"));
   }
   SECTION("a JONSWAP sea without a peak period") {
     const auto deck = oc3_deck(dir, "platform_motion: {}\nwaves: {model: jonswap, hs_m: 2.0}\nsimulation: {}\n");
-    CHECK_THROWS_WITH(run_scene(request_for(deck, dir / "run"), nullptr),
+    CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run"), nullptr),
                       Catch::Contains("scene.yaml:3") && Catch::Contains("tp_s"));
   }
   SECTION("an unknown channel") {
     const auto deck = oc3_deck(dir, "platform_motion: {}\noutput: {channels: [HydroFxi, FAIRTEN4]}\nsimulation: {}\n");
-    CHECK_THROWS_WITH(run_scene(request_for(deck, dir / "run"), nullptr),
+    CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run"), nullptr),
                       Catch::Contains("scene.yaml:3") && Catch::Contains("FAIRTEN4"));
   }
 }
@@ -96,7 +89,7 @@ TEST_CASE("bad platform decks stop before the run with file, line and key", "[un
 TEST_CASE("the platform scene reports the linearised mooring stiffness on request", "[verification][platform_scene]") {
   const auto dir = testing::scratch_dir("platform_scene_stiffness");
   const RunReport report = run_scene(
-      request_for(oc3_deck(dir, "simulation: {t_max_s: 1.0, dt_s: 0.5}\nplatform_motion: {}\nreport_mooring_stiffness: true\n"), dir / "k"),
+      run_request(oc3_deck(dir, "simulation: {t_max_s: 1.0, dt_s: 0.5}\nplatform_motion: {}\nreport_mooring_stiffness: true\n"), dir / "k"),
       nullptr);
   REQUIRE(report.results.size() == 7);  // a title and six rows
   // K11 at zero offset: published OC3 value 41,180 N/m (TP-47266, quoted: 1 %); the mooring tests
@@ -109,7 +102,7 @@ TEST_CASE("Morison strips cut at the wave elevation run on the precomputed water
   const std::string body =
       "simulation: {t_max_s: 20.0, dt_s: 0.1}\nhydro: {surface: wave_elevation}\n"
       "waves: {model: regular, height_m: 6.0, period_s: 10.0, depth_m: 320.0, dt_s: 0.25}\nplatform_motion: {}\n";
-  run_scene(request_for(oc3_deck(dir, body), dir / "run"), nullptr);
+  run_scene(run_request(oc3_deck(dir, body), dir / "run"), nullptr);
   const io::ChannelTable t = io::read_channels(dir / "run.out");
   // The Morison surge force follows the wave: a regular 6 m wave on the 6.5 m column gives
   // meganewtons (the inertia-dominated closed form of the hydro tests); still water gives zero.

@@ -10,6 +10,7 @@
 #include "fowtsim/io/readers.hpp"
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
+#include "run_request.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -24,15 +25,6 @@ toy_oscillators:
   fast: {mass_kg: 10.0, stiffness_N_m: 4000.0, damping_N_s_m: 4.0}
 )";
   return path;
-}
-
-RunRequest request_for(const std::filesystem::path& deck, const std::filesystem::path& base,
-                       std::optional<std::string> format) {
-  RunRequest r;
-  r.deck_path = deck;
-  r.output_base = base;
-  r.output_format = std::move(format);
-  return r;
 }
 
 std::string status_attribute(const std::filesystem::path& h5) {
@@ -62,7 +54,7 @@ TEST_CASE("a forced blow-up stops in its step, names module and variable, and ke
   // per step and passes the 1 km divergence bound within a few seconds.
   const auto dir = testing::scratch_dir("blow_up");
   const auto deck = write_deck(dir, "simulation: {t_max_s: 100.0, dt_coupling_s: 0.2, substeps: 1, coupling: single_rate}");
-  const RunRequest request = request_for(deck, dir / "run", std::string("h5"));
+  const RunRequest request = run_request(deck, dir / "run", std::string("h5"));
   double failed_at = -1;
   try {
     run_scene(request, nullptr);
@@ -87,8 +79,8 @@ TEST_CASE("a forced blow-up stops in its step, names module and variable, and ke
 TEST_CASE("same deck twice gives bit-identical channels", "[unit][run]") {
   const auto dir = testing::scratch_dir("determinism");
   const auto deck = write_deck(dir, "simulation: {t_max_s: 10.0, dt_coupling_s: 0.05, substeps: 8, coupling: predictor_corrector}");
-  run_scene(request_for(deck, dir / "a", std::string("both")), nullptr);
-  run_scene(request_for(deck, dir / "b", std::string("both")), nullptr);
+  run_scene(run_request(deck, dir / "a", std::string("both")), nullptr);
+  run_scene(run_request(deck, dir / "b", std::string("both")), nullptr);
   const io::ChannelTable a = io::read_hdf5_channels(dir / "a.h5"), b = io::read_hdf5_channels(dir / "b.h5");
   REQUIRE(a.names == b.names);
   for (std::size_t c = 0; c < a.columns.size(); ++c) {
@@ -107,18 +99,18 @@ TEST_CASE("bad scene decks stop before the run with file, line and key", "[unit]
   const auto dir = testing::scratch_dir("bad_deck");
   SECTION("t_max not a multiple of the coupling step") {
     const auto deck = write_deck(dir, "simulation: {t_max_s: 1.01, dt_coupling_s: 0.1}");
-    CHECK_THROWS_WITH(run_scene(request_for(deck, dir / "run", std::nullopt), nullptr),
+    CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run", std::nullopt), nullptr),
                       Catch::Contains("deck.yaml:") && Catch::Contains("simulation.t_max_s"));
     CHECK_FALSE(std::filesystem::exists(dir / "run.h5"));  // nothing written: stopped before the run
   }
   SECTION("single-rate with sub-steps") {
     const auto deck = write_deck(dir, "simulation: {t_max_s: 1.0, dt_coupling_s: 0.1, substeps: 4, coupling: single_rate}");
-    CHECK_THROWS_WITH(run_scene(request_for(deck, dir / "run", std::nullopt), nullptr),
+    CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run", std::nullopt), nullptr),
                       Catch::Contains("simulation.substeps"));
   }
   SECTION("unknown output channel") {
     const auto deck = write_deck(dir, "simulation: {t_max_s: 1.0, dt_coupling_s: 0.1}\noutput: {channels: [ToySlowPos, PtfmSurge]}");
-    CHECK_THROWS_WITH(run_scene(request_for(deck, dir / "run", std::nullopt), nullptr),
+    CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run", std::nullopt), nullptr),
                       Catch::Contains("output.channels[1]") && Catch::Contains("PtfmSurge"));
   }
 }
@@ -130,7 +122,7 @@ TEST_CASE("the toy deck's run matches the exact solution to the coupling error",
   // coupling's accuracy is noticed here, against the exact solution, and explained.
   const auto dir = testing::scratch_dir("toy_deck");
   const auto deck = testing::source_dir() / "inputs/toy_coupled_oscillators.yaml";
-  run_scene(request_for(deck, dir / "run", std::string("h5")), nullptr);
+  run_scene(run_request(deck, dir / "run", std::string("h5")), nullptr);
   const io::ChannelTable t = io::read_hdf5_channels(dir / "run.h5");
   double worst = 0;
   for (double e : t.columns[*t.find("ToySlowPosErr")]) worst = std::max(worst, std::abs(e));

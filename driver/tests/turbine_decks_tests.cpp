@@ -11,6 +11,7 @@
 #include "fowtsim/io/turbsim_bts.hpp"
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
+#include "run_request.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -62,8 +63,5 @@ TEST_CASE("a floating deck whose aero blade disagrees with the structure stops b
   const auto deck = dir / "turbine.yaml";
   std::ofstream(deck) << "include: [" << (testing::source_dir() / "inputs/oc3_hywind/turbine_steady_15mps.yaml").string() << "]\n"
                       << "aero: {number_of_blades: 2}\n";
-  RunRequest r;
-  r.deck_path = deck;
-  r.output_base = dir / "run";
-  CHECK_THROWS_WITH(run_scene(r, nullptr), Catch::Contains("turbine.yaml:2") && Catch::Contains("2 blades, the structure has 3"));
+  CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run", std::nullopt), nullptr), Catch::Contains("turbine.yaml:2") && Catch::Contains("2 blades, the structure has 3"));
 }
