@@ -82,11 +82,7 @@ aero::Params aero_params(const io::ValidatedDeck& deck) {
       cm.push_back(row[3]);
     }
     names.push_back(af.string("name"));
-    try {
-      p.airfoils.emplace_back(names.back(), alpha, cl, cd, cm, interpolation);
-    } catch (const InputError& e) {
-      rethrow_located(af, e);
-    }
+    located(af, [&] { p.airfoils.emplace_back(names.back(), alpha, cl, cd, cm, interpolation); });
   }
   p.tip_loss = a.boolean("tip_loss");
   p.hub_loss = a.boolean("hub_loss");
@@ -128,11 +124,7 @@ aero::Params aero_params(const io::ValidatedDeck& deck) {
   }
   if (a.has("output_nodes"))
     for (std::size_t i = 0; i < a.size("output_nodes"); ++i) p.output_nodes.push_back(static_cast<int>(a.integer(fmt::format("output_nodes[{}]", i))));
-  try {
-    aero::validate(p);
-  } catch (const InputError& e) {
-    rethrow_located(a, e);
-  }
+  located(a, [&] { aero::validate(p); });
   return p;
 }
 

@@ -26,4 +26,15 @@ std::string where(const io::ValidatedDeck& deck, const std::string& path);
 // prefixed with the file:line of the deck section (the message names the keys).
 [[noreturn]] void rethrow_located(const io::ValidatedDeck& section, const InputError& error);
 
+// Runs `check` (a module's validation, or a construction that validates) and returns its result,
+// re-throwing its InputError located at `section` as rethrow_located does.
+template <class Check>
+decltype(auto) located(const io::ValidatedDeck& section, Check&& check) {
+  try {
+    return check();
+  } catch (const InputError& e) {
+    rethrow_located(section, e);
+  }
+}
+
 }  // namespace fowtsim::driver

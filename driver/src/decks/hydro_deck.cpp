@@ -99,11 +99,7 @@ hydro::Params hydro_params(const io::ValidatedDeck& d) {
   p.added_stiffness = mat6(d, "added_stiffness");
   p.added_damping = mat6(d, "added_damping");
   p.added_quadratic_damping = mat6(d, "added_quadratic_damping");
-  try {
-    hydro::validate(p);
-  } catch (const InputError& e) {
-    rethrow_located(d, e);
-  }
+  located(d, [&] { hydro::validate(p); });
   return p;
 }
 

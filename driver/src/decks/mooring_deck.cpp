@@ -60,11 +60,7 @@ mooring::MooringParams mooring_params(const io::ValidatedDeck& d) {
     lp.seabed_friction = l.number("seabed_friction");
     p.lines.push_back(lp);
   }
-  try {
-    mooring::validate(p);
-  } catch (const InputError& e) {
-    rethrow_located(d, e);
-  }
+  located(d, [&] { mooring::validate(p); });
   return p;
 }
 

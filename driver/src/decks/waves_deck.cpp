@@ -64,11 +64,7 @@ waves::WaveParams wave_params(const io::ValidatedDeck& d) {
       p.elevation_probes_m.push_back({xy[0], xy[1]});
     }
   }
-  try {
-    waves::validate(p);
-  } catch (const InputError& e) {
-    rethrow_located(d, e);
-  }
+  located(d, [&] { waves::validate(p); });
   return p;
 }
 

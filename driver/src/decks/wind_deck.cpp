@@ -63,11 +63,7 @@ wind::WindParams wind_params(const io::ValidatedDeck& d) {
     p.turbulence.duration_s = t.number("duration_s");
     p.turbulence.seed = static_cast<std::uint64_t>(t.integer("seed"));
   }
-  try {
-    wind::validate(p);
-  } catch (const InputError& e) {
-    rethrow_located(d, e);
-  }
+  located(d, [&] { wind::validate(p); });
   return p;
 }
 

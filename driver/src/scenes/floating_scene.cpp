@@ -132,13 +132,7 @@ bool is_floating_scene(const std::filesystem::path& deck) {
 RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress) {
   const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), request.deck_path);
   const multibody::Params structure = structure_params(deck.section("structure"));
-  const multibody::Model model = [&] {
-    try {
-      return multibody::make_model(structure);
-    } catch (const InputError& e) {
-      rethrow_located(deck.section("structure"), e);
-    }
-  }();
+  const multibody::Model model = located(deck.section("structure"), [&] { return multibody::make_model(structure); });
   if (deck.has("aero") && (!deck.has("airfoils") || !deck.has("wind")))
     throw InputError({"floating", std::nullopt, "aero", "airfoils and wind sections"},
                      where(deck, "aero") + ": rotor aerodynamics need the `airfoils` and `wind` sections too");
