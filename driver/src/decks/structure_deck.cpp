@@ -73,8 +73,21 @@ Schema structure_schema() {
       {"azimuth_deg", zero_default("Azimuth")},
       {"rotor_speed_rpm", zero_default("RotSpeed")},
       {"nacelle_yaw_deg", zero_default("NacYaw")},
+      {"blade_pitch_deg", zero_default("BlPitch: initial pitch of every blade (held until the controller's first call)")},
+  });
+  auto free_dof = [](const char* doc) { return Schema::boolean().default_value(true).doc(doc); };
+  const Schema dofs = Schema::map({
+      {"surge", free_dof("PtfmSgDOF: false holds it at its initial value")},
+      {"sway", free_dof("PtfmSwDOF")},
+      {"heave", free_dof("PtfmHvDOF")},
+      {"roll", free_dof("PtfmRDOF")},
+      {"pitch", free_dof("PtfmPDOF")},
+      {"yaw", free_dof("PtfmYDOF")},
+      {"rotor_speed", Schema::choice({"free", "held"}).default_value("free")
+                          .doc("GenDOF: held = the rotor turns at its initial speed")},
   });
   return Schema::map({
+      {"degrees_of_freedom", dofs.optional().doc("DOF switches of the load case; absent = all free")},
       {"gravity_m_s2", Schema::number().at_least(0.0).default_value(9.80665).doc("gravity")},
       {"max_step_s", Schema::number().greater_than(0.0).default_value(0.02).doc("largest internal RK4 step")},
       {"platform", platform.doc("platform (rigid base body with the tower)")},
@@ -134,6 +147,12 @@ multibody::Params structure_params(const io::ValidatedDeck& d) {
   p.drivetrain.torsional_flexibility = dt.boolean("torsional_flexibility");
   p.drivetrain.torsional_stiffness_N_m_rad = dt.number("torsional_stiffness_N_m_rad");
   p.drivetrain.torsional_damping_N_m_s_rad = dt.number("torsional_damping_N_m_s_rad");
+  if (d.has("degrees_of_freedom")) {
+    const io::ValidatedDeck f = d.section("degrees_of_freedom");
+    const char* names[] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+    for (int i = 0; i < 6; ++i) p.dofs.platform_free[i] = f.boolean(names[i]);
+    if (f.string("rotor_speed") == "held") p.dofs.rotor = multibody::RotorSpin::held;
+  }
   if (d.has("initial_conditions")) {
     const io::ValidatedDeck ic = d.section("initial_conditions");
     auto v3 = [&](const char* key) { return ic.has(key) ? vec3(ic, key) : Vec3::Zero(); };

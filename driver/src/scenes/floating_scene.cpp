@@ -1,6 +1,8 @@
 #include "scenes/floating_scene.hpp"
 
 #include <array>
+#include <numbers>
+#include <optional>
 #include <type_traits>
 #include <variant>
 
@@ -20,6 +22,7 @@
 #include "scenes/scene_runner.hpp"
 #include "scenes/rotor_aero.hpp"
 #include "scenes/sea_modules.hpp"
+#include "scenes/turbine_blades.hpp"
 
 namespace fowtsim::driver {
 namespace {
@@ -79,7 +82,8 @@ class Controller {
 // `aero`), and the generator torque and blade pitch held over the large step.
 class StageLoads final : public multibody::LoadProvider {
  public:
-  StageLoads(const multibody::Model& model, SeaModules& sea, RotorAero* rotor) : model_(model), sea_(sea), rotor_(rotor) {}
+  StageLoads(const multibody::Model& model, SeaModules& sea, RotorAero* rotor, const TurbineBlades* blades)
+      : model_(model), sea_(sea), rotor_(rotor), blades_(blades) {}
   void hold(double generator_torque_N_m, double pitch_rad) {
     generator_torque_ = generator_torque_N_m;
     pitch_ = pitch_rad;
@@ -92,18 +96,24 @@ class StageLoads final : public multibody::LoadProvider {
     out.platform_moment_N_m += load.tail<3>();
     out.platform_added_mass = sea_.added_mass();
     out.generator_torque_N_m = generator_torque_;
-    if (rotor_) {
+    if (blades_) {  // flexible blades: their held root loads, aerodynamics included
+      multibody::chain_kinematics(model_, s, chain_);
+      blades_->add_stage_loads(chain_, out);
+    } else if (rotor_) {
       multibody::chain_kinematics(model_, s, chain_);
       rotor_->evaluate(t, chain_, s.rotor_speed_rad_s, pitch_);
       out.rotor_force_N = rotor_->force_N();
       out.rotor_moment_N_m = rotor_->moment_N_m();
     }
   }
+  multibody::SpinMotion rotor_spin(double t) override { return blades_ ? blades_->spin(t) : multibody::SpinMotion{}; }
+  double generator_torque_N_m() const { return generator_torque_; }
 
  private:
   const multibody::Model& model_;
   SeaModules& sea_;
   RotorAero* rotor_;
+  const TurbineBlades* blades_;
   multibody::ChainKinematics chain_;
   double generator_torque_ = 0.0, pitch_ = 0.0;
 };
@@ -122,6 +132,7 @@ Schema floating_scene_schema() {
       {"airfoils", airfoils_schema().optional().doc("airfoil polars the aero blade rows name")},
       {"wind", wind_schema().optional().doc("inflow (needed with `aero`)")},
       {"controller", controller_schema().optional().doc("generator torque and blade pitch; absent = parked, no torque")},
+      {"blades", blades_schema().optional().doc("flexible MBBT blades (and the coupling); absent = rigid blades")},
   });
 }
 
@@ -131,14 +142,15 @@ bool is_floating_scene(const std::filesystem::path& deck) {
 
 RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress) {
   const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), request.deck_path);
-  const multibody::Params structure = structure_params(deck.section("structure"));
+  multibody::Params structure = structure_params(deck.section("structure"));
+  if (deck.has("blades")) TurbineBlades::configure(structure);
   const multibody::Model model = located(deck.section("structure"), [&] { return multibody::make_model(structure); });
   if (deck.has("aero") && (!deck.has("airfoils") || !deck.has("wind")))
     throw InputError({"floating", std::nullopt, "aero", "airfoils and wind sections"},
                      where(deck, "aero") + ": rotor aerodynamics need the `airfoils` and `wind` sections too");
-  if (structure.rotor.flexible_blades)  // the blades would be missing: no beam is coupled here yet
-    throw InputError({"floating", std::nullopt, "structure.rotor.flexible_blades", "false"},
-                     where(deck, "structure.rotor.flexible_blades") + ": this scene has rigid blades only (MBBT blades: next issue)");
+  if (structure.rotor.flexible_blades && !deck.has("blades"))
+    throw InputError({"floating", std::nullopt, "structure.rotor.flexible_blades", "a blades section"},
+                     where(deck, "structure.rotor.flexible_blades") + ": flexible blades need the `blades` section (their structure)");
   multibody::State state = multibody::Multibody::make_state(model);
   SeaModules sea(deck, platform_motion(state));
   std::optional<RotorAero> rotor;
@@ -158,7 +170,28 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
   }
   std::optional<Controller> controller;
   if (deck.has("controller")) controller.emplace(controller_params(deck.section("controller")));
-  StageLoads stage_loads(model, sea, rotor ? &*rotor : nullptr);
+  std::optional<TurbineBlades> blades;
+  if (deck.has("blades")) blades.emplace(deck, model, rotor ? &*rotor : nullptr);
+  StageLoads stage_loads(model, sea, rotor ? &*rotor : nullptr, blades ? &*blades : nullptr);
+  const double initial_pitch = deck.has("structure.initial_conditions")
+                                   ? deck.number("structure.initial_conditions.blade_pitch_deg") * std::numbers::pi / 180.0
+                                   : 0.0;
+  stage_loads.hold(0.0, initial_pitch);
+  // The shaft motion (non-rotating) of a multibody state at time t, under the stage loads.
+  multibody::Evaluation evaluation;
+  auto shaft_at = [&](double t) {
+    multibody::AppliedLoads loads;
+    stage_loads.loads(t, state, loads);
+    multibody::evaluate(model, state, loads, t, evaluation);
+    return shaft_motion(evaluation.kinematics, evaluation.acceleration);
+  };
+  auto demands = [&] {
+    RotorDemands d;
+    d.generator_torque_N_m = stage_loads.generator_torque_N_m();
+    d.pitch_command_rad = stage_loads.pitch_rad();
+    return d;
+  };
+  if (blades) blades->start(shaft_at(0.0), state, initial_pitch, demands());
 
   std::vector<ChannelInfo> all = multibody::Multibody::channels(model);
   const std::size_t sea_first = all.size();
@@ -166,6 +199,9 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
   const std::size_t rotor_first = all.size();
   if (rotor)
     for (const ChannelInfo& c : rotor->channels()) all.push_back(c);
+  const std::size_t blades_first = all.size();
+  if (blades)
+    for (const ChannelInfo& c : blades->channels()) all.push_back(c);
   const std::size_t controller_first = all.size();
   if (controller)  // GenTq, GenPwr, BldPitch1–3; GenSpeed comes from the multibody
     for (const ChannelInfo& c : control::controller_channels("control"))
@@ -188,7 +224,23 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
       controller->advance(u, t, dt);
       stage_loads.hold(controller->output().generator_torque_N_m, controller->output().blade_pitch_rad[0]);
     }
+    if (!blades) {
+      multibody::Multibody::advance(model, stage_loads, t, dt, state);
+      return;
+    }
+    // turbine_blades.hpp, steps 1–4.
+    const ShaftMotion begin = blades->shaft();
+    const multibody::State before = state;
+    blades->use_extrapolated_spin_profile(t);
     multibody::Multibody::advance(model, stage_loads, t, dt, state);
+    blades->advance_fast(t, dt, begin, shaft_at(t + dt), demands());
+    blades->hold_new_average();
+    if (blades->mode() == CouplingMode::predictor_corrector) {
+      state = before;
+      blades->use_step_spin_profile(t);
+      multibody::Multibody::advance(model, stage_loads, t, dt, state);
+    }
+    blades->copy_spin(state);
   };
   scene.row = [&](double t, std::span<double> row) {
     multibody::AppliedLoads loads;
@@ -198,6 +250,7 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
     const std::span<double> v(values);
     sea.channel_values(t, v.subspan(sea_first));
     if (rotor) rotor->channel_values(t, v.subspan(rotor_first));
+    if (blades) blades->channel_values(v.subspan(blades_first));
     if (controller) {
       std::array<double, 6> c{};
       control::controller_channel_values(controller->output(), c);
@@ -214,7 +267,9 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
     }
   }();
   if (controller) controller->finish(report.simulated_s);
-  report.coupling = "rigid multibody; sea and rotor loads at every RK4 stage; controller at the large step";
+  report.coupling = blades ? "rigid multibody with sea loads at every RK4 stage; " + blades->description() +
+                                 "; controller at the large step"
+                           : "rigid multibody; sea and rotor loads at every RK4 stage; controller at the large step";
   return report;
 }
 

@@ -66,6 +66,23 @@ void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, doub
   moment_ = t_gh * output_.rotor.moment_hub_N_m;
 }
 
+void RotorAero::evaluate_placed(double t, const Vec3& apex_m, const Mat3& t_gh, double rotor_speed_rad_s,
+                                std::span<const double> pitch_rad, const Vec3& tower_base_m, const Vec3& tower_axis) {
+  input_.hub_position_m = apex_m;
+  input_.hub_orientation = t_gh;
+  input_.rotor_speed_rad_s = rotor_speed_rad_s;
+  for (Eigen::Index b = 0; b < input_.blade_pitch_rad.size(); ++b) input_.blade_pitch_rad[b] = pitch_rad[static_cast<std::size_t>(b)];
+  input_.time_s = t;
+  input_.tower_base_position_m = tower_base_m;
+  input_.tower_axis = tower_axis;
+  for (std::size_t k = 0; k < points_.size(); ++k) points_[k] = input_.node_position_m.col(static_cast<Eigen::Index>(k));
+  wind_->velocities(points_, t, inflow_);
+  for (std::size_t k = 0; k < points_.size(); ++k) input_.inflow_velocity_m_s.col(static_cast<Eigen::Index>(k)) = inflow_[k];
+  aero::evaluate(params_, input_, {}, output_);
+  force_ = t_gh * output_.rotor.force_hub_N;
+  moment_ = t_gh * output_.rotor.moment_hub_N_m;
+}
+
 std::vector<ChannelInfo> RotorAero::channels() const {
   std::vector<ChannelInfo> all = aero::Aero::channels(params_);
   for (const ChannelInfo& c : wind::Wind::channels({wind_})) all.push_back(c);

@@ -28,6 +28,15 @@ class RotorAero {
   // Loads at time t on the rotor in the chain configuration `chain`, blade pitch `pitch_rad`:
   // force at the apex and moment about it, inertial frame [N, N·m].
   void evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad);
+  // Flexible blades: the caller places every node (position, airfoil frame, structural velocity,
+  // all in g; BladeAeroMap::place) in placed_input(), then evaluate_placed() computes the loads
+  // per node into output() and the rotor resultant about the apex.
+  aero::Aero::Input& placed_input() { return input_; }
+  void evaluate_placed(double t, const Vec3& apex_m, const Mat3& t_gh, double rotor_speed_rad_s,
+                       std::span<const double> pitch_rad, const Vec3& tower_base_m, const Vec3& tower_axis);
+  const aero::Aero::Output& output() const { return output_; }
+  // The wind field (for the rotor-plane probe and checks that the rotor stays inside the grid).
+  const wind::WindField& wind() const { return *wind_; }
   const aero::Params& params() const { return params_; }
   const Vec3& force_N() const { return force_; }
   const Vec3& moment_N_m() const { return moment_; }

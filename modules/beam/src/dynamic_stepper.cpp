@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -23,8 +25,9 @@ DynamicStepper::DynamicStepper(const BeamModel& model, DynamicOptions options)
     : model_(model), options_(options) {
   const int n = model.node_count();
   system_.resize(n);
-  lhs_.resize(n);
-  for (VecX* v : {&v0_, &a0_, &q_, &v1_, &a1_, &w_damping_, &w_stiffness_}) *v = VecX::Zero(6 * n);
+  rebuilt_.resize(n);
+  for (VecX* v : {&v0_, &a0_, &q_, &v1_, &a1_, &w_damping_, &w_stiffness_, &solution_, &per_unit_})
+    *v = VecX::Zero(6 * n);
   if (options_.integrator == Integrator::erk)
     erk_ = std::make_unique<Erk>(6 * n, options_.erk_relative_tolerance,
                                  options_.erk_absolute_tolerance);
@@ -38,35 +41,15 @@ double DynamicStepper::input_time_fraction() const {
 }
 
 void DynamicStepper::step(const BeamInput& input, double dt, BeamState& state) {
-  const int n = model_.node_count();
-  for (int i = 0; i < n; ++i) {
-    v0_.segment<6>(6 * i) = state.velocity[i];
-    a0_.segment<6>(6 * i) = state.acceleration[i];
+  if (options_.integrator == Integrator::generalized_alpha) {
+    prepare(input, FrameAccelerationDirection{}, dt, state);
+    finish(0.0, state);
+    return;
   }
-  if (options_.integrator == Integrator::generalized_alpha)
-    integrate_generalized_alpha(input, state, dt);
-  else
-    integrate_erk(input, state, dt);
-
-  const double t_end = state.time_s + dt;
-  if (!q_.allFinite() || !v1_.allFinite())
-    throw NumericalError({"beam", t_end, "increments", "reduce the beam time step"},
-                         "non-finite beam increment");
-  const double max_rot = update_base(q_, state);
-  ++matrix_age_;
-  turned_since_matrix_ += max_rot;
-  if (max_rot > options_.max_increment_rad)
-    throw NumericalError(
-        {"beam", t_end, "incremental rotation", "reduce the beam time step dt"},
-        fmt::format("an incremental rotation of {:.3g} rad in one step exceeds the small-angle "
-                    "limit {:.3g} rad of the piecewise-linear scheme",
-                    max_rot, options_.max_increment_rad));
-  for (int i = 0; i < n; ++i) {
-    state.velocity[i] = v1_.segment<6>(6 * i);
-    state.acceleration[i] = a1_.segment<6>(6 * i);
-  }
-  state.acceleration_valid = options_.integrator == Integrator::generalized_alpha;
-  state.time_s = t_end;
+  for (int i = 0; i < model_.node_count(); ++i) v0_.segment<6>(6 * i) = state.velocity[i];
+  dt_ = dt;
+  integrate_erk(input, state, dt);
+  commit(state);
 }
 
 // Generalized-α (Chung & Hulbert 1993) on M q̈ + C q̇ + K q = r with q0 = 0 (the base moved to
@@ -79,47 +62,117 @@ void DynamicStepper::step(const BeamInput& input, double dt, BeamState& state) {
 //     = r − M a0 − C (v0 + (1−αf) Δt a0) − (1−αf) K (Δt v0 + ½ Δt² a0)   (= R at a1 = a0).
 // Velocities and accelerations are resolved in f, so they carry over to the new base unchanged
 // (eqs. 2.78–2.79).
-void DynamicStepper::integrate_generalized_alpha(const BeamInput& input, const BeamState& state,
-                                                 double dt) {
+AffineRootLoad DynamicStepper::prepare(const BeamInput& input, const FrameAccelerationDirection& direction,
+                                       double dt, const BeamState& state) {
+  if (options_.integrator != Integrator::generalized_alpha)
+    throw InputError({"beam", std::nullopt, "integrator", "generalized_alpha"},
+                     "a beam coupled through its frame acceleration needs the generalized_alpha integrator");
   const int n = model_.node_count();
+  for (int i = 0; i < n; ++i) {
+    v0_.segment<6>(6 * i) = state.velocity[i];
+    a0_.segment<6>(6 * i) = state.acceleration[i];
+  }
   const double rho = options_.spectral_radius;
   const double am = (2.0 * rho - 1.0) / (rho + 1.0), af = rho / (rho + 1.0);
-  const double gamma = 0.5 - am + af, beta = 0.25 * (1.0 - am + af) * (1.0 - am + af);
+  gamma_ = 0.5 - am + af;
+  beta_ = 0.25 * (1.0 - am + af) * (1.0 - am + af);
+  dt_ = dt;
 
   // Before the first step: the consistent acceleration M a0 = r − C v0 (q0 = 0).
-  if (!state.acceleration_valid) {
+  const bool fresh_motion = !state.acceleration_valid;
+  if (fresh_motion) {
     linearize(model_, input, state, Inertia::included, system_);
     system_.damping.multiply(v0_, w_damping_);
     for (int i = 0; i < n; ++i)
       a0_.segment<6>(6 * i) = system_.mass[i].partialPivLu().solve(
           Vec6(system_.rhs.segment<6>(6 * i) - w_damping_.segment<6>(6 * i)));
-    matrix_valid_ = false;  // a new motion: do not carry a matrix over from another
   }
 
   w_damping_ = v0_ + ((1.0 - af) * dt) * a0_;
   w_stiffness_ = ((1.0 - af) * dt) * v0_ + (0.5 * (1.0 - af) * dt * dt) * a0_;
-  step_residual(model_, input, state, w_damping_, w_stiffness_, a0_, a1_);  // R, solved in place
-  const StepWeights weights{1.0 - am, (1.0 - af) * gamma * dt, (1.0 - af) * beta * dt * dt};
-  if (step_matrix_is_stale(weights)) {
-    assemble_step_matrix(model_, input, state, weights, lhs_);
-    if (!lhs_.factor())
+  step_residual(model_, input, state, w_damping_, w_stiffness_, a0_, solution_);  // R, solved in place
+  weights_ = {1.0 - am, (1.0 - af) * gamma_ * dt, (1.0 - af) * beta_ * dt * dt};
+  // A new motion does not carry a matrix over from another.
+  matrix_rebuilt_ = fresh_motion || step_matrix_is_stale(state.step_matrix, weights_);
+  if (matrix_rebuilt_) {
+    assemble_step_matrix(model_, input, state, weights_, rebuilt_);
+    if (!rebuilt_.factor())
       throw NumericalError({"beam", std::nullopt, "step matrix", "check the mass and inertia of the beam"},
                            "singular step matrix (zero mass or inertia?)");
-    matrix_valid_ = true;
-    matrix_age_ = 0;
-    turned_since_matrix_ = 0.0;
-    matrix_weights_ = weights;
   }
-  lhs_.solve_in_place(a1_);
-  a1_ += a0_;
-  q_ = dt * v0_ + (dt * dt) * ((0.5 - beta) * a0_ + beta * a1_);
-  v1_ = v0_ + dt * ((1.0 - gamma) * a0_ + gamma * a1_);
+  const BlockTridiagonal& lhs = matrix_rebuilt_ ? rebuilt_ : state.step_matrix.factored;
+  lhs.solve_in_place(solution_);
+
+  // The root load at the balance time is the root section's share of the residual at the trial
+  // motion w + (c, k)·Δa (root_residual_load), affine in Δa = solution + s·per_unit.
+  const bool coupled = !direction.acceleration_m_s2.isZero(0.0) || !direction.angular_acceleration_rad_s2.isZero(0.0);
+  AffineRootLoad root;
+  if (coupled) {
+    frame_acceleration_load(model_, state, w_stiffness_, direction.acceleration_m_s2,
+                            direction.angular_acceleration_rad_s2, per_unit_);
+    lhs.solve_in_place(per_unit_);
+    // The trial vectors are reused as scratch below and restored by finish() from v0, a0.
+    const Vec6 base = root_residual_load(model_, state, w_damping_, w_stiffness_);
+    v1_ = w_damping_ + weights_.damping * solution_;
+    q_ = w_stiffness_ + weights_.stiffness * solution_;
+    root.at_zero = root_residual_load(model_, state, v1_, q_);
+    v1_ = w_damping_ + weights_.damping * per_unit_;
+    q_ = w_stiffness_ + weights_.stiffness * per_unit_;
+    root.per_unit = root_residual_load(model_, state, v1_, q_) - base;
+  } else {
+    per_unit_.setZero();
+    v1_ = w_damping_ + weights_.damping * solution_;
+    q_ = w_stiffness_ + weights_.stiffness * solution_;
+    root.at_zero = root_residual_load(model_, state, v1_, q_);
+  }
+  return root;
 }
 
-bool DynamicStepper::step_matrix_is_stale(const StepWeights& w) const {
-  return !matrix_valid_ || matrix_age_ >= options_.matrix_max_age ||
-         turned_since_matrix_ > options_.matrix_max_rotation_rad || w.mass != matrix_weights_.mass ||
-         w.damping != matrix_weights_.damping || w.stiffness != matrix_weights_.stiffness;
+void DynamicStepper::finish(double s, BeamState& state) {
+  a1_ = a0_ + solution_ + s * per_unit_;
+  q_ = dt_ * v0_ + (dt_ * dt_) * ((0.5 - beta_) * a0_ + beta_ * a1_);
+  v1_ = v0_ + dt_ * ((1.0 - gamma_) * a0_ + gamma_ * a1_);
+  commit(state);
+}
+
+// Checks the step's increments, then (and only then) folds them into the state.
+void DynamicStepper::commit(BeamState& state) {
+  const int n = model_.node_count();
+  const double t_end = state.time_s + dt_;
+  if (!q_.allFinite() || !v1_.allFinite())
+    throw NumericalError({"beam", t_end, "increments", "reduce the beam time step"},
+                         "non-finite beam increment");
+  double max_rot = 0.0;
+  for (int i = 0; i < n; ++i) max_rot = std::max(max_rot, q_.segment<3>(6 * i + 3).norm());
+  if (max_rot > options_.max_increment_rad)
+    throw NumericalError(
+        {"beam", t_end, "incremental rotation", "reduce the beam time step dt"},
+        fmt::format("an incremental rotation of {:.3g} rad in one step exceeds the small-angle "
+                    "limit {:.3g} rad of the piecewise-linear scheme",
+                    max_rot, options_.max_increment_rad));
+  StepMatrixCache& cache = state.step_matrix;
+  if (options_.integrator == Integrator::generalized_alpha && matrix_rebuilt_) {
+    std::swap(cache.factored, rebuilt_);  // O(1): the old matrix becomes the next workspace
+    if (rebuilt_.blocks() != n) rebuilt_.resize(n);
+    cache.valid = true;
+    cache.age = 0;
+    cache.turned_rad = 0.0;
+    cache.weights = weights_;
+  }
+  update_base(q_, state);
+  ++cache.age;
+  cache.turned_rad += max_rot;
+  for (int i = 0; i < n; ++i) {
+    state.velocity[i] = v1_.segment<6>(6 * i);
+    state.acceleration[i] = a1_.segment<6>(6 * i);
+  }
+  state.acceleration_valid = options_.integrator == Integrator::generalized_alpha;
+  state.time_s = t_end;
+}
+
+bool DynamicStepper::step_matrix_is_stale(const StepMatrixCache& c, const StepWeights& w) const {
+  return !c.valid || c.age >= options_.matrix_max_age || c.turned_rad > options_.matrix_max_rotation_rad ||
+         w.mass != c.weights.mass || w.damping != c.weights.damping || w.stiffness != c.weights.stiffness;
 }
 
 void DynamicStepper::integrate_erk(const BeamInput& input, const BeamState& state, double dt) {

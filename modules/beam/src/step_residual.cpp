@@ -87,4 +87,33 @@ void step_residual(const BeamModel& model, const BeamInput& input, const BeamSta
   }
 }
 
+void frame_acceleration_load(const BeamModel& model, const BeamState& state, const VecX& w_k, const Vec3& da,
+                             const Vec3& dw_dot, VecX& out) {
+  // The derivative of node_residual along (a_f, Ω̇) = (da, dω̇): a_0 grows by da + dω̇ × (x + c)
+  // and frame_a(v) by dω̇ × v; every other term is independent of the frame acceleration.
+  for (int n = 0; n < model.node_count(); ++n) {
+    const NodeModel& node = model.nodes[n];
+    const Mat3& r = state.orientation[n];
+    const double m = node.mass_kg;
+    const Vec3 c = r * node.mass_offset_m;
+    Mat3 i_g = r * node.inertia_kg_m2 * r.transpose() + m * c * c.transpose();
+    i_g.diagonal().array() -= m * c.squaredNorm();
+    const Vec3 th_k = w_k.segment<3>(6 * n + 3);
+    const Vec3 c_th = c.cross(th_k);
+    const Vec3 d_a0 = da + dw_dot.cross(state.position_m[n] + c);
+    const Vec3 d_translational = m * (d_a0 + dw_dot.cross(w_k.segment<3>(6 * n) - c_th));
+    const Vec3 i_w_dot = i_g * dw_dot;
+    out.segment<3>(6 * n) = -d_translational;
+    out.segment<3>(6 * n + 3) =
+        -(c.cross(d_translational) + i_w_dot + i_g * dw_dot.cross(th_k) + m * d_a0.cross(c_th) - i_w_dot.cross(th_k));
+  }
+}
+
+Vec6 root_residual_load(const BeamModel& model, const BeamState& state, const VecX& w_c, const VecX& w_k) {
+  const SectionModel& sec = model.sections.front();
+  return section_residual_loads(sec, node_pose(model, state, -1), node_pose(model, state, sec.outboard),
+                                reduced_pair(w_k, -1, sec.outboard), reduced_pair(w_c, -1, sec.outboard))
+      .head<6>();
+}
+
 }  // namespace fowtsim::beam

@@ -47,12 +47,25 @@ void set_yaw(const Model& model, LoadProvider& provider, double t, State& s) {
   }
 }
 
+// A prescribed spin replaces the integrated one at every stage and at the end of the step.
+void set_spin(const Model& model, LoadProvider& provider, double t, State& s) {
+  if (model.params.dofs.rotor != RotorSpin::prescribed) return;
+  const SpinMotion spin = provider.rotor_spin(t);
+  s.rotor_azimuth_rad = spin.rotor_azimuth_rad;
+  s.rotor_speed_rad_s = spin.rotor_speed_rad_s;
+  s.rotor_acceleration_rad_s2 = spin.rotor_acceleration_rad_s2;
+  s.generator_azimuth_rad = spin.generator_azimuth_rad;
+  s.generator_speed_rad_s = spin.generator_speed_rad_s;
+  s.generator_acceleration_rad_s2 = spin.generator_acceleration_rad_s2;
+}
+
 // ẏ at (t, y). `scratch` carries the non-integrated parts (yaw) and receives the stage state.
 Vector17 derivative(const Model& model, LoadProvider& provider, double t, const Vector17& y,
                     State& scratch, Evaluation& eval) {
   unpack(y, scratch);
   scratch.orientation.normalize();
   set_yaw(model, provider, t, scratch);
+  set_spin(model, provider, t, scratch);
   AppliedLoads loads;
   provider.loads(t, scratch, loads);
   evaluate(model, scratch, loads, t, eval);
@@ -107,6 +120,7 @@ void Multibody::advance(const Model& model, LoadProvider& provider, double t, do
   }
   unpack(y, state);
   set_yaw(model, provider, t + dt, state);
+  set_spin(model, provider, t + dt, state);
 }
 
 }  // namespace fowtsim::multibody

@@ -69,6 +69,11 @@ State initial_state(const Model& model) {
   s.generator_azimuth_rad = s.rotor_azimuth_rad;
   s.generator_speed_rad_s = s.rotor_speed_rad_s;
   s.nacelle_yaw_rad = ic.nacelle_yaw_deg * kDeg;
+  // A held platform DOF does not move (u = [v_ref in g; ω in b], DOFs 0…5 in that order).
+  for (int i = 0; i < 3; ++i) {
+    if (model.acceleration_given[kSurge + i]) s.velocity_m_s[i] = 0.0;
+    if (model.acceleration_given[kRoll + i]) s.angular_velocity_rad_s[i] = 0.0;
+  }
   return s;
 }
 
@@ -131,6 +136,20 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
   if (model.dof_count < kMaxDofs) {
     m(kGenerator, kGenerator) = 1.0;
     f[kGenerator] = 0.0;
+  }
+  // Given accelerations (held DOFs, prescribed spin): move their columns to the right-hand side
+  // and replace their rows by u̇_i = given.
+  for (int i = 0; i < model.dof_count; ++i) {
+    if (!model.acceleration_given[i]) continue;
+    const bool prescribed = model.params.dofs.rotor == RotorSpin::prescribed;
+    const double a = !prescribed || i < kRotor ? 0.0
+                     : i == kRotor             ? state.rotor_acceleration_rad_s2
+                                               : state.generator_acceleration_rad_s2;
+    f.noalias() -= m.col(i) * a;
+    m.row(i).setZero();
+    m.col(i).setZero();
+    m(i, i) = 1.0;
+    f[i] = a;
   }
   const Eigen::LLT<GeneralisedMatrix> llt(m);
   if (llt.info() != Eigen::Success) {

@@ -269,9 +269,22 @@ Model make_model(const Params& params) {
   m.dof_count = p.drivetrain.torsional_flexibility ? 8 : 7;
   m.generator_dof = p.drivetrain.torsional_flexibility ? kGenerator : kRotor;
 
-  // A singular mass matrix (a DOF with no inertia) is an input error, not a run-time NaN.
+  for (int i = 0; i < 6; ++i) m.acceleration_given[i] = !p.dofs.platform_free[i];
+  if (p.dofs.rotor != RotorSpin::free) {
+    m.acceleration_given[kRotor] = true;
+    if (m.dof_count > kGenerator) m.acceleration_given[kGenerator] = true;
+  }
+
+  // A singular mass matrix (a DOF with no inertia) is an input error, not a run-time NaN. Rows
+  // whose acceleration is given are not solved for and need no inertia.
   const State s0 = initial_state(m);
-  const GeneralisedMatrix mass = generalised_mass(m, s0, Mat6::Zero());
+  GeneralisedMatrix mass = generalised_mass(m, s0, Mat6::Zero());
+  for (int i = 0; i < m.dof_count; ++i)
+    if (m.acceleration_given[i]) {
+      mass.row(i).setZero();
+      mass.col(i).setZero();
+      mass(i, i) = mass.diagonal().maxCoeff() + 1.0;
+    }
   const Eigen::VectorXd diag = mass.diagonal().head(m.dof_count);
   // Relative to the largest diagonal entry: M mixes kg, kg·m and kg·m² but the test only has to
   // catch an exactly (or numerically) missing inertia.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fowtsim/beam/beam_model.hpp"
+#include "fowtsim/beam/step_matrix.hpp"
 #include "fowtsim/core/types.hpp"
 
 namespace fowtsim::beam {
@@ -37,6 +38,7 @@ struct BeamState {
   std::vector<Vec6> velocity;     // [ẋ_n; ω_n] relative to f, in f [m/s; rad/s]
   std::vector<Vec6> acceleration;  // generalized-α's algorithmic acceleration, in f [m/s²; rad/s²]
   bool acceleration_valid = false;  // false: solved from M a = r − C v before the first step
+  StepMatrixCache step_matrix;      // generalized-α's factored step matrix, reused while fresh
 };
 
 // Undeformed, at rest relative to f.

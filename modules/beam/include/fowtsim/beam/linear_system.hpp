@@ -21,6 +21,7 @@
 #include "fowtsim/beam/beam_model.hpp"
 #include "fowtsim/beam/beam_state.hpp"
 #include "fowtsim/beam/block_tridiagonal.hpp"
+#include "fowtsim/beam/step_matrix.hpp"
 
 namespace fowtsim::beam {
 
@@ -43,9 +44,6 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
 
 // The matrix of an implicit step, A = m M + c C + k K, assembled in one pass without forming M, C
 // and K apart (the section tangents are most of its cost; combined they are built once).
-struct StepWeights {
-  double mass = 1.0, damping = 0.0, stiffness = 0.0;  // m, c, k
-};
 void assemble_step_matrix(const BeamModel& model, const BeamInput& input, const BeamState& state,
                           const StepWeights& weights, BlockTridiagonal& lhs);
 
@@ -55,6 +53,18 @@ void assemble_step_matrix(const BeamModel& model, const BeamInput& input, const 
 void step_residual(const BeamModel& model, const BeamInput& input, const BeamState& state,
                    const VecX& damping_vector, const VecX& stiffness_vector, const VecX& acceleration,
                    VecX& residual);
+
+// ∂R/∂s of step_residual when the frame acceleration grows by s·(da, dω̇) (both in f): the
+// inertial loads of that frame acceleration on every node at the trial stiffness vector w_k.
+// R is affine in the frame acceleration, so R(s) = R(0) + s·out exactly (the rotor spin solved
+// together with the blades, solvers.hpp DynamicStepper::prepare).
+void frame_acceleration_load(const BeamModel& model, const BeamState& state, const VecX& stiffness_vector,
+                             const Vec3& da, const Vec3& dw_dot, VecX& out);
+
+// The load the root section puts on the root (force; moment about the root point, in f) at a trial
+// motion, consistent with step_residual: the root's share of r − C w_c − K w_k. Affine in (w_c, w_k).
+Vec6 root_residual_load(const BeamModel& model, const BeamState& state, const VecX& damping_vector,
+                        const VecX& stiffness_vector);
 
 // Loads the beam puts on its root (force; moment about the root point), in f, including
 // strain-rate damping of the state's velocities.

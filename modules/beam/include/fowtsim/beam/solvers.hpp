@@ -69,7 +69,21 @@ struct DynamicOptions {
   double erk_absolute_tolerance = 1e-12;  // on increments [m, rad] and their rates
 };
 
-// Workspace of the dynamic step: sized on first use, reused without allocation afterwards.
+// Frame acceleration per unit of a scalar s the caller solves for (DynamicStepper::prepare), in f.
+struct FrameAccelerationDirection {
+  Vec3 acceleration_m_s2 = Vec3::Zero();           // ∂a_f/∂s
+  Vec3 angular_acceleration_rad_s2 = Vec3::Zero();  // ∂Ω̇_f/∂s
+};
+
+// The root load (force; moment about the root point, in f) at the step's balance time
+// t + (1 − αf)Δt as the affine function at_zero + s·per_unit of the frame-acceleration scalar s.
+struct AffineRootLoad {
+  Vec6 at_zero = Vec6::Zero();
+  Vec6 per_unit = Vec6::Zero();
+};
+
+// Workspace of the dynamic step: sized on first use, reused without allocation afterwards. The
+// factored step matrix it reuses lives in BeamState::step_matrix.
 class DynamicStepper {
  public:
   DynamicStepper(const BeamModel& model, DynamicOptions options);
@@ -79,30 +93,42 @@ class DynamicStepper {
 
   // Advance state by dt under `input`, evaluated at t + input_time_fraction()·dt. Throws
   // NumericalError on a non-finite result, a singular system or an increment above
-  // max_increment_rad.
+  // max_increment_rad, and then leaves `state` as it was (a caller may retry with a smaller dt).
   void step(const BeamInput& input, double dt, BeamState& state);
+
+  // The same step in two halves, for a frame acceleration that is partly unknown: the input's
+  // plus s·direction, where the caller solves for s from the root load this step returns (the
+  // rotor spin solved together with the blades, DESIGN.md §4). The residual is affine in s
+  // (frame_acceleration_load), so the step's solution is Δa(s) = A⁻¹R(0) + s A⁻¹ ∂R/∂s: one
+  // extra block-tridiagonal solve. prepare() does not touch `state`; finish(s, state) must get
+  // the same state and completes the step exactly as step() would with that frame acceleration.
+  // generalized_alpha only.
+  AffineRootLoad prepare(const BeamInput& input, const FrameAccelerationDirection& direction, double dt,
+                         const BeamState& state);
+  void finish(double s, BeamState& state);
 
   // Where in the step the input must be sampled to keep second order: generalized-α balances
   // forces at t + (1 − αf) Δt (= t + Δt for ρ∞ = 0); the erk integrator holds the input constant
   // over the step, best taken at the middle.
   double input_time_fraction() const;
+  const DynamicOptions& options() const { return options_; }
 
   struct Erk;  // ARKODE state of the erk integrator (src/erk_integrator.hpp)
 
  private:
-  void integrate_generalized_alpha(const BeamInput& input, const BeamState& state, double dt);
-  bool step_matrix_is_stale(const StepWeights& weights) const;
+  bool step_matrix_is_stale(const StepMatrixCache& cache, const StepWeights& weights) const;
+  void commit(BeamState& state);
   void integrate_erk(const BeamInput& input, const BeamState& state, double dt);
 
   const BeamModel& model_;
   DynamicOptions options_;
   LinearizedBeam system_;
-  BlockTridiagonal lhs_;  // factored step matrix A, reused while fresh
-  bool matrix_valid_ = false;
-  int matrix_age_ = 0;                // steps taken with it
-  double turned_since_matrix_ = 0.0;  // Σ of each step's largest node rotation since it was built [rad]
-  StepWeights matrix_weights_;       // its m, c, k (they change with Δt)
-  VecX v0_, a0_, q_, v1_, a1_, w_damping_, w_stiffness_;
+  BlockTridiagonal rebuilt_;   // a fresh step matrix, moved into the state when the step succeeds
+  bool matrix_rebuilt_ = false;
+  StepWeights weights_;
+  double dt_ = 0.0;
+  double beta_ = 0.25, gamma_ = 0.5;
+  VecX v0_, a0_, q_, v1_, a1_, w_damping_, w_stiffness_, solution_, per_unit_;
   std::unique_ptr<Erk> erk_;
 };
 

@@ -39,6 +39,13 @@ struct YawMotion {
   double acceleration_rad_s2 = 0.0;          // its second time derivative [rad/s²]
 };
 
+// Prescribed rotor spin (used only with RotorSpin::prescribed); the generator entries are the
+// LSS-equivalent θ_g and its rates, equal to the rotor's with a rigid shaft.
+struct SpinMotion {
+  double rotor_azimuth_rad = 0.0, rotor_speed_rad_s = 0.0, rotor_acceleration_rad_s2 = 0.0;
+  double generator_azimuth_rad = 0.0, generator_speed_rad_s = 0.0, generator_acceleration_rad_s2 = 0.0;
+};
+
 // Implemented by the driver (and by tests). Called from advance() at every stage; must not
 // allocate if the step is to stay allocation-free. A function may throw to abort the step.
 class LoadProvider {
@@ -49,6 +56,8 @@ class LoadProvider {
   virtual void loads(double t, const State& state, AppliedLoads& out) = 0;
   // The prescribed yaw at time t; called before loads() when the model's yaw is prescribed.
   virtual YawMotion nacelle_yaw(double /*t*/) { return {}; }
+  // The prescribed spin at time t; called before loads() when the model's spin is prescribed.
+  virtual SpinMotion rotor_spin(double /*t*/) { return {}; }
 };
 
 }  // namespace fowtsim::multibody

@@ -48,6 +48,10 @@ struct Model {
   std::array<Vec3, kMaxBlades> blade_root_h{};              // root point i in h, from the apex [m]
   int dof_count = 7;                      // 7 (rigid drivetrain) or 8 (torsional flexibility)
   int generator_dof = kRotor;             // index of the DOF that turns the generator
+  // DOFs whose acceleration is given instead of solved for (Params::dofs): zero for a held DOF,
+  // State::rotor/generator_acceleration_rad_s2 for a prescribed spin. Their rows of M u̇ = f
+  // are dropped; the constraint torque that enforces them is internal to the chain.
+  std::array<bool, kMaxDofs> acceleration_given{};
 };
 
 // Validates params (InputError listing every bad field, module "multibody", with the deck key

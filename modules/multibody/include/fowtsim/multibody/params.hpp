@@ -8,6 +8,7 @@
 // Frames (OpenFAST, DESIGN.md §3): g inertial (origin at SWL on the undisplaced centre line, x
 // downwind, z up); b platform body frame, origin at the platform reference point, parallel to g
 // when the platform is undisplaced; the tower is straight along z_b.
+#include <array>
 #include <vector>
 
 #include "fowtsim/core/types.hpp"
@@ -85,6 +86,19 @@ struct InitialConditions {
   double nacelle_yaw_deg = 0.0;           // NacYaw [deg] (fixed yaw, or start of a prescribed one)
 };
 
+// Which DOFs a load case frees (ElastoDyn's PtfmSgDOF … GenDOF switches). A held platform DOF
+// keeps its initial value (its velocity starts and stays zero: the seed's "fixed" cases hold the
+// platform at given angles). The rotor spin is free (the rotor row of the equations of motion),
+// held at its initial speed (GenDOF off), or prescribed: azimuth, speed and acceleration of rotor
+// and generator come from LoadProvider::rotor_spin(t) because the flexible-blade coupling solves
+// the spin together with the blades at the small step (DESIGN.md §4: the blades carry ≈ 7× the
+// rotational inertia of hub and generator, so the spin must not receive their torque explicitly).
+enum class RotorSpin { free, held, prescribed };
+struct DofSwitches {
+  std::array<bool, 6> platform_free{true, true, true, true, true, true};  // surge, sway, heave, roll, pitch, yaw
+  RotorSpin rotor = RotorSpin::free;
+};
+
 struct Params {
   double gravity_m_s2 = 9.80665;          // g [m/s²] (≥ 0); switched per evaluation by AppliedLoads::gravity
   double max_step_s = 0.02;               // largest internal RK4 step of advance() [s] (> 0)
@@ -94,6 +108,7 @@ struct Params {
   RotorParams rotor;
   DrivetrainParams drivetrain;
   InitialConditions initial_conditions;
+  DofSwitches dofs;
 };
 
 // Blade mass, first and second mass moments about the root of a line mass whose mass per length

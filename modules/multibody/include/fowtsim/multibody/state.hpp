@@ -17,6 +17,8 @@ struct State {
   double rotor_speed_rad_s = 0.0;                   // ψ̇ (LSS) [rad/s]
   double generator_azimuth_rad = 0.0;               // θ_g: generator angle / gearbox ratio (LSS side) [rad]
   double generator_speed_rad_s = 0.0;               // θ̇_g [rad/s]; GenSpeed = N θ̇_g; = ψ̇ with a rigid shaft
+  double rotor_acceleration_rad_s2 = 0.0;            // ψ̈, used only when the spin is prescribed [rad/s²]
+  double generator_acceleration_rad_s2 = 0.0;        // θ̈_g, likewise [rad/s²]
   double nacelle_yaw_rad = 0.0;                     // nacelle yaw about z_b (prescribed or fixed) [rad]
   double nacelle_yaw_rate_rad_s = 0.0;              // [rad/s]
   double nacelle_yaw_acceleration_rad_s2 = 0.0;     // [rad/s²]

@@ -1,0 +1,163 @@
+#pragma once
+// The fast side of the coupled turbine (seed 000 §4.4, DESIGN.md §4): three flexible MBBT blades
+// and the rotor spin, advanced together at the small step Δt through the motion of the
+// non-rotating shaft frame, which the rigid multibody computes at the large step ΔT.
+//
+// Why the spin is here and not in the multibody. The blades carry ≈ 7× the rotational inertia of
+// hub and generator (NREL 5MW: 3.9e7 vs 5.1e6 kg·m²). Handing the blades' root torque to a hub
+// whose spin is integrated apart is an added-mass partition, unstable above ΔT ≈ 2 ms whatever n
+// (measured, DESIGN.md §4). So in every small step the hub spin acceleration is one more unknown
+// of the blades' linear systems: each blade's generalized-α step is affine in it
+// (beam::DynamicStepper::prepare), the hub and drivetrain balance about the shaft closes the
+// system (one or two scalars bordering three block-tridiagonal systems: O(N)), and then the
+// blades finish their steps with the solved value. The multibody takes azimuth, speed and
+// acceleration as prescribed (multibody::RotorSpin::prescribed).
+//
+// Frames (multibody/model.hpp): s shaft (non-rotating), h = s R_x(ψ) hub, r_i blade-i root frame
+// (coned), f_i = r_i R_z(−β_i) the pitched root frame in which blade i is a cantilever (BeamDyn's
+// blade frame: the blade table's twist is relative to it; positive pitch β toward feather, as
+// the aero module's airfoil frame T_ga = T_gb R_z(−(twist + β))).
+#include <array>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "fowtsim/beam/beam_model.hpp"
+#include "fowtsim/beam/beam_outputs.hpp"
+#include "fowtsim/beam/beam_state.hpp"
+#include "fowtsim/beam/solvers.hpp"
+#include "fowtsim/multibody/kinematics.hpp"
+#include "fowtsim/multibody/model.hpp"
+
+namespace fowtsim::driver {
+
+class RotorAero;
+class BladeAeroMap;
+
+inline constexpr int kBlades = 3;
+
+// Motion of the shaft frame s at the rotor apex, all in g: what the multibody hands the fast side.
+struct ShaftMotion {
+  Vec3 apex_position_m = Vec3::Zero();
+  Vec3 apex_velocity_m_s = Vec3::Zero();
+  Vec3 apex_acceleration_m_s2 = Vec3::Zero();
+  Mat3 orientation = Mat3::Identity();               // T_gs
+  Vec3 angular_velocity_rad_s = Vec3::Zero();        // ω_s in g
+  Vec3 angular_acceleration_rad_s2 = Vec3::Zero();   // α_s in g
+  Vec3 tower_base_m = Vec3::Zero();                  // tower-axis point at SWL elevation (aero tower influence)
+  Vec3 tower_axis = Vec3::UnitZ();
+};
+ShaftMotion shaft_motion(const multibody::ChainKinematics& chain, const multibody::GeneralisedVector& udot);
+// Vectors linearly, orientation along the geodesic: the slow motion inside a large step.
+ShaftMotion interpolate(const ShaftMotion& a, const ShaftMotion& b, double x);
+
+// Motion of one pitched blade-root frame f_i, in g.
+struct BladeFrame {
+  Mat3 orientation = Mat3::Identity();               // T_gf
+  Vec3 root_m = Vec3::Zero();                        // root point
+  Vec3 root_velocity_m_s = Vec3::Zero();
+  Vec3 root_acceleration_m_s2 = Vec3::Zero();
+  Vec3 angular_velocity_rad_s = Vec3::Zero();
+  Vec3 angular_acceleration_rad_s2 = Vec3::Zero();
+  Vec3 arm_m = Vec3::Zero();                         // root − apex
+};
+
+enum class SpinMode { free, held };
+
+struct FlexibleRotorParams {
+  beam::BeamModel blade;                 // one blade, clamped at the origin of f
+  beam::DynamicOptions dynamics;         // generalized-α (ρ∞, matrix reuse)
+  double hub_inertia_kg_m2 = 0.0;        // HubIner about the shaft
+  double generator_inertia_kg_m2 = 0.0;  // GenIner about the HSS
+  double gearbox_ratio = 1.0;
+  bool torsional_flexibility = false;
+  double torsional_stiffness_N_m_rad = 0.0, torsional_damping_N_m_s_rad = 0.0;
+  SpinMode spin = SpinMode::free;
+  std::array<Mat3, kBlades> root_orientation_h{};  // T_h,r_i
+  std::array<Vec3, kBlades> root_h{};              // root point in h from the apex [m]
+  double gravity_m_s2 = 9.80665;
+  // Blade pitch actuator: β̈ = ω² (β_cmd − β) − 2ζω β̇, so a demand held over ΔT does not step
+  // the pitch (and the blades' frame) every large step.
+  double pitch_natural_frequency_rad_s = 2.0 * 3.141592653589793 * 2.0;
+  double pitch_damping_ratio = 0.7;
+};
+
+// Spin of rotor (ψ) and generator (θ_g, LSS-equivalent) as generalized-α variables: the
+// accelerations are the algorithm's, the physical one is the mean over the last small step.
+struct SpinState {
+  double rotor_azimuth_rad = 0.0, rotor_speed_rad_s = 0.0, rotor_acceleration_rad_s2 = 0.0;
+  double generator_azimuth_rad = 0.0, generator_speed_rad_s = 0.0, generator_acceleration_rad_s2 = 0.0;
+  double rotor_mean_acceleration_rad_s2 = 0.0;      // (ψ̇1 − ψ̇0)/Δt of the last small step
+  double generator_mean_acceleration_rad_s2 = 0.0;
+};
+
+// Everything the fast side integrates: plain, copyable (a copy continues bit-identically: each
+// beam state carries its factored step matrix).
+struct FlexibleRotorState {
+  std::array<beam::BeamState, kBlades> blades;
+  SpinState spin;
+  std::array<double, kBlades> pitch_rad{}, pitch_rate_rad_s{}, pitch_acceleration_rad_s2{};
+  double time_s = 0.0;
+};
+
+// What the slow side holds over a large step.
+struct RotorDemands {
+  double generator_torque_N_m = 0.0;   // HSS
+  double pitch_command_rad = 0.0;      // collective
+  bool gravity = true;
+};
+
+class FlexibleRotor {
+ public:
+  // `aero` and `map` may be null (no aerodynamics); they must outlive the rotor.
+  FlexibleRotor(FlexibleRotorParams params, RotorAero* aero, const BladeAeroMap* map);
+  FlexibleRotor(const FlexibleRotor&) = delete;  // the steppers refer to params_.blade
+  FlexibleRotor& operator=(const FlexibleRotor&) = delete;
+
+  // Blades at their static solution under the frame motion, gravity and (if any) aerodynamics
+  // at t = 0 (`static_start`), or undeformed and moving rigidly with the hub; spin and pitch
+  // from the arguments.
+  void start(const ShaftMotion& shaft, double azimuth_rad, double rotor_speed_rad_s, double pitch_rad,
+             const RotorDemands& demands, bool static_start);
+
+  // n small steps from t to t + ΔT through the shaft motion interpolated between `begin` and
+  // `end`. Returns the blades' root loads on the hub averaged over the step (trapezoidal weights
+  // on the n + 1 samples: the time average of the piecewise-linear history), as a force at the
+  // apex and a moment about it, in the hub frame h (kept in h so that the slow side turns it
+  // with the hub at every stage instead of letting it lag by Ω·ΔT).
+  struct HubLoad {
+    Vec3 force_h_N = Vec3::Zero();
+    Vec3 moment_h_N_m = Vec3::Zero();
+  };
+  HubLoad advance(double t, double dt_large, int substeps, const ShaftMotion& begin, const ShaftMotion& end,
+                  const RotorDemands& demands);
+
+  // Root loads of all blades now (same form), the first sample of the next large step.
+  HubLoad hub_load() const { return last_; }
+  const FlexibleRotorState& state() const { return state_; }
+  void set_state(const FlexibleRotorState& s);
+  const FlexibleRotorParams& params() const { return params_; }
+  // Motion of blade i's pitched root frame for the shaft motion and the current spin and pitch.
+  BladeFrame frame(const ShaftMotion& shaft, int blade) const;
+  const ShaftMotion& shaft() const { return shaft_; }
+  beam::BeamOutputs blade_outputs(int blade) const { return beam::beam_outputs(params_.blade, state_.blades[blade]); }
+
+ private:
+  void evaluate_aero(double t, const ShaftMotion& shaft);
+  void fill_inputs(const ShaftMotion& shaft, const RotorDemands& demands);
+  void step(double t, double dt, const ShaftMotion& shaft, const RotorDemands& demands);
+  void advance_pitch(double dt, double command);
+  HubLoad root_loads(const ShaftMotion& shaft) const;
+
+  FlexibleRotorParams params_;
+  RotorAero* aero_;
+  const BladeAeroMap* map_;
+  FlexibleRotorState state_;
+  std::array<std::unique_ptr<beam::DynamicStepper>, kBlades> steppers_;
+  std::array<beam::BeamInput, kBlades> inputs_;
+  std::array<std::vector<Vec6>, kBlades> aero_loads_;
+  ShaftMotion shaft_;
+  HubLoad last_;
+};
+
+}  // namespace fowtsim::driver

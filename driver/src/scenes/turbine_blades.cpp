@@ -1,0 +1,249 @@
+#include "scenes/turbine_blades.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Geometry>
+#include <fmt/format.h>
+
+#include "decks/beam_deck.hpp"
+#include "decks/deck_helpers.hpp"
+#include "fowtsim/core/rotation_vector.hpp"
+#include "scenes/rotor_aero.hpp"
+
+namespace fowtsim::driver {
+
+using io::Schema;
+
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+}  // namespace
+
+Schema blades_schema() {
+  std::vector<io::SchemaField> fields = beam_schema_fields(23);
+  fields.push_back({"start", Schema::choice({"static", "undeformed"}).default_value("static")
+                                 .doc("static: each blade starts from its static solution under the initial frame motion, "
+                                      "gravity and aero loads; undeformed: weightless shape, as OpenFAST starts")});
+  fields.push_back({"coupling", Schema::choice({"multi_rate", "predictor_corrector", "single_rate"})
+                                    .default_value("multi_rate").doc("exchange between the multibody (ΔT) and the blades (Δt)")});
+  fields.push_back({"substeps", Schema::integer().at_least(1).at_most(10000).default_value(4)
+                                    .doc("n = ΔT/Δt: blade steps per large step (single_rate needs 1)")});
+  fields.push_back({"stiffness_scale", Schema::number().greater_than(0.0).default_value(1.0)
+                                           .doc("factor on every sectional stiffness (1000: the stiff-blade check)")});
+  fields.push_back({"pitch_actuator_frequency_hz", Schema::number().greater_than(0.0).default_value(2.0)
+                                                       .doc("natural frequency of the second-order pitch actuator")});
+  fields.push_back({"pitch_actuator_damping_ratio", Schema::number().greater_than(0.0).default_value(0.7)
+                                                        .doc("its damping ratio")});
+  return Schema::map(std::move(fields));
+}
+
+void TurbineBlades::configure(multibody::Params& p) {
+  p.rotor.flexible_blades = true;
+  if (p.dofs.rotor == multibody::RotorSpin::free) p.dofs.rotor = multibody::RotorSpin::prescribed;
+}
+
+namespace {
+
+FlexibleRotorParams rotor_params(const io::ValidatedDeck& deck, const multibody::Model& model) {
+  const io::ValidatedDeck b = deck.section("blades");
+  FlexibleRotorParams p;
+  beam::BeamDefinition definition = beam_definition(deck, "blades");
+  for (beam::Station& station : definition.stations) station.stiffness *= b.number("stiffness_scale");
+  p.blade = located(b, [&] { return beam::discretise(definition, static_cast<int>(b.integer("segments"))); });
+  p.dynamics.integrator = beam::integrator_from_name(b.string("integrator"));
+  p.dynamics.spectral_radius = b.number("spectral_radius");
+  const multibody::Params& s = model.params;
+  p.hub_inertia_kg_m2 = s.rotor.hub_inertia_kg_m2;
+  p.generator_inertia_kg_m2 = s.drivetrain.generator_inertia_kg_m2;
+  p.gearbox_ratio = s.drivetrain.gearbox_ratio;
+  p.torsional_flexibility = s.drivetrain.torsional_flexibility;
+  p.torsional_stiffness_N_m_rad = s.drivetrain.torsional_stiffness_N_m_rad;
+  p.torsional_damping_N_m_s_rad = s.drivetrain.torsional_damping_N_m_s_rad;
+  p.spin = s.dofs.rotor == multibody::RotorSpin::held ? SpinMode::held : SpinMode::free;
+  for (int i = 0; i < kBlades; ++i) {
+    p.root_orientation_h[i] = model.blade_root_orientation_h[i];
+    p.root_h[i] = model.blade_root_h[i];
+  }
+  p.gravity_m_s2 = s.gravity_m_s2;
+  p.pitch_natural_frequency_rad_s = 2.0 * std::numbers::pi * b.number("pitch_actuator_frequency_hz");
+  p.pitch_damping_ratio = b.number("pitch_actuator_damping_ratio");
+  if (model.blade_count != kBlades)
+    throw InputError({"floating", std::nullopt, "structure.rotor.blade_count", "3"},
+                     where(deck, "structure.rotor.blade_count") + ": flexible blades need a three-bladed rotor");
+  const double length = s.rotor.tip_radius_m - s.rotor.hub_radius_m;
+  if (std::abs(p.blade.length_m / length - 1.0) > 1e-3)
+    throw InputError({"floating", std::nullopt, "blades.key_points_m", "the structure's blade length"},
+                     where(deck, "blades.key_points_m") +
+                         fmt::format(": the blade is {:.4g} m long, tip − hub radius of the structure is {:.4g} m",
+                                     p.blade.length_m, length));
+  return p;
+}
+
+}  // namespace
+
+TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Model& model, RotorAero* aero)
+    : model_(model),
+      params_(rotor_params(deck, model)),
+      map_(aero ? std::optional<BladeAeroMap>(std::in_place, aero->params(), params_.blade,
+                                              -model.params.rotor.precone_deg / kDeg, model.params.rotor.hub_radius_m)
+                : std::nullopt),
+      rotor_(params_, aero, map_ ? &*map_ : nullptr) {
+  const io::ValidatedDeck b = deck.section("blades");
+  mode_ = parse_coupling_mode(b.string("coupling"));
+  substeps_ = static_cast<int>(b.integer("substeps"));
+  if (mode_ == CouplingMode::single_rate && substeps_ != 1)
+    throw InputError({"floating", std::nullopt, "blades.substeps", "1 with single_rate"},
+                     where(deck, "blades.substeps") + ": single_rate coupling takes one blade step per large step");
+  static_start_ = b.string("start") == "static";
+}
+
+void TurbineBlades::start(const ShaftMotion& shaft, const multibody::State& state, double pitch_rad,
+                          const RotorDemands& demands) {
+  rotor_.start(shaft, state.rotor_azimuth_rad, state.rotor_speed_rad_s, pitch_rad, demands, static_start_);
+  held_ = rotor_.hub_load();
+  use_extrapolated_spin_profile(0.0);
+}
+
+void TurbineBlades::add_stage_loads(const multibody::ChainKinematics& chain, multibody::AppliedLoads& out) const {
+  const Mat3& t_gh = chain.rotor.orientation;
+  out.rotor_force_N += t_gh * held_.force_h_N;
+  out.rotor_moment_N_m += t_gh * held_.moment_h_N_m;
+}
+
+multibody::SpinMotion TurbineBlades::spin(double t) const {
+  const double tau = t - profile_.t0;
+  const multibody::SpinMotion& s = profile_.at_t0;
+  multibody::SpinMotion m = s;
+  m.rotor_azimuth_rad = s.rotor_azimuth_rad + tau * s.rotor_speed_rad_s + 0.5 * tau * tau * s.rotor_acceleration_rad_s2;
+  m.rotor_speed_rad_s = s.rotor_speed_rad_s + tau * s.rotor_acceleration_rad_s2;
+  m.generator_azimuth_rad =
+      s.generator_azimuth_rad + tau * s.generator_speed_rad_s + 0.5 * tau * tau * s.generator_acceleration_rad_s2;
+  m.generator_speed_rad_s = s.generator_speed_rad_s + tau * s.generator_acceleration_rad_s2;
+  return m;
+}
+
+void TurbineBlades::use_extrapolated_spin_profile(double t) {
+  const SpinState& s = rotor_.state().spin;
+  profile_.t0 = t;
+  profile_.at_t0 = {s.rotor_azimuth_rad, s.rotor_speed_rad_s, mean_rotor_acceleration_,
+                    s.generator_azimuth_rad, s.generator_speed_rad_s, mean_generator_acceleration_};
+}
+
+void TurbineBlades::advance_fast(double t, double dt_large, const ShaftMotion& begin, const ShaftMotion& end,
+                                 const RotorDemands& demands) {
+  const SpinState before = rotor_.state().spin;
+  held_next_ = rotor_.advance(t, dt_large, substeps_, begin, end, demands);
+  const SpinState& after = rotor_.state().spin;
+  mean_rotor_acceleration_ = (after.rotor_speed_rad_s - before.rotor_speed_rad_s) / dt_large;
+  mean_generator_acceleration_ = (after.generator_speed_rad_s - before.generator_speed_rad_s) / dt_large;
+  spin_before_ = before;
+}
+
+void TurbineBlades::use_step_spin_profile(double t) {
+  // The corrector pass of the multibody through the spin the fast side took over the step.
+  profile_.t0 = t;
+  profile_.at_t0 = {spin_before_.rotor_azimuth_rad, spin_before_.rotor_speed_rad_s, mean_rotor_acceleration_,
+                    spin_before_.generator_azimuth_rad, spin_before_.generator_speed_rad_s,
+                    mean_generator_acceleration_};
+}
+
+void TurbineBlades::hold_new_average() { held_ = held_next_; }
+
+void TurbineBlades::copy_spin(multibody::State& state) const {
+  const SpinState& s = rotor_.state().spin;
+  state.rotor_azimuth_rad = s.rotor_azimuth_rad;
+  state.rotor_speed_rad_s = s.rotor_speed_rad_s;
+  state.rotor_acceleration_rad_s2 = mean_rotor_acceleration_;
+  state.generator_azimuth_rad = s.generator_azimuth_rad;
+  state.generator_speed_rad_s = s.generator_speed_rad_s;
+  state.generator_acceleration_rad_s2 = mean_generator_acceleration_;
+}
+
+std::string TurbineBlades::description() const {
+  return fmt::format("3 flexible MBBT blades ({} finite volumes, {} start), rotor spin solved with them; {} coupling, "
+                     "{} blade steps per large step",
+                     rotor_.params().blade.node_count(), static_start_ ? "static" : "undeformed", to_string(mode_),
+                     substeps_);
+}
+
+// Channels, OpenFAST names (ElastoDyn for the coned c and blade b frames, BeamDyn's B<b>…r for
+// the pitched root frame r = f): root loads are the blade's loads on the hub, tip deflections
+// relative to the undeformed blade moving with its root frame.
+std::vector<ChannelInfo> TurbineBlades::channels() const {
+  std::vector<ChannelInfo> c;
+  const char* axes = "xyz";
+  for (int b = 1; b <= kBlades; ++b) {
+    for (const char* frame : {"c", "b"}) {
+      for (int i = 0; i < 3; ++i)
+        c.push_back({fmt::format("RootF{}{}{}", axes[i], frame, b), "kN",
+                     fmt::format("blade {} root force along {}_{} (blade on hub)", b, axes[i], frame), "blades"});
+      for (int i = 0; i < 3; ++i)
+        c.push_back({fmt::format("RootM{}{}{}", axes[i], frame, b), "kN-m",
+                     fmt::format("blade {} root moment about {}_{} (blade on hub)", b, axes[i], frame), "blades"});
+      for (int i = 0; i < 3; ++i)
+        c.push_back({fmt::format("TipD{}{}{}", axes[i], frame, b), "m",
+                     fmt::format("blade {} tip deflection along {}_{}", b, axes[i], frame), "blades"});
+    }
+    for (int i = 0; i < 3; ++i)
+      c.push_back({fmt::format("TipRD{}b{}", axes[i], b), "deg",
+                   fmt::format("blade {} tip rotation about {}_b (rotation vector)", b, axes[i]), "blades"});
+    c.push_back({fmt::format("OoPDefl{}", b), "m", fmt::format("blade {} out-of-plane tip deflection (= TipDxc)", b), "blades"});
+    c.push_back({fmt::format("IPDefl{}", b), "m", fmt::format("blade {} in-plane tip deflection (= TipDyc)", b), "blades"});
+    c.push_back({fmt::format("TwstDefl{}", b), "deg", fmt::format("blade {} tip twist, + toward feather", b), "blades"});
+    for (int i = 0; i < 3; ++i)
+      c.push_back({fmt::format("B{}RootF{}r", b, axes[i]), "N", fmt::format("BeamDyn: blade {} root force, root frame", b), "blades"});
+    for (int i = 0; i < 3; ++i)
+      c.push_back({fmt::format("B{}RootM{}r", b, axes[i]), "N-m", fmt::format("BeamDyn: blade {} root moment, root frame", b), "blades"});
+    for (int i = 0; i < 3; ++i)
+      c.push_back({fmt::format("B{}TipTD{}r", b, axes[i]), "m", fmt::format("BeamDyn: blade {} tip deflection, root frame", b), "blades"});
+    c.push_back({fmt::format("BldPitchAct{}", b), "deg", fmt::format("blade {} pitch after the actuator", b), "blades"});
+  }
+  c.push_back({"RotThrust", "kN", "rotor thrust along the shaft: the blades' root loads on the hub", "blades"});
+  c.push_back({"RotTorq", "kN-m", "low-speed shaft torque: blades' root torque less the hub's inertia", "blades"});
+  c.push_back({"LSShftFxa", "kN", "= RotThrust", "blades"});
+  c.push_back({"LSShftMxa", "kN-m", "= RotTorq", "blades"});
+  return c;
+}
+
+void TurbineBlades::channel_values(std::span<double> out) const {
+  std::size_t k = 0;
+  const FlexibleRotorState& st = rotor_.state();
+  for (int b = 0; b < kBlades; ++b) {
+    const beam::BeamOutputs o = rotor_.blade_outputs(b);
+    const Vec6& root = o.root_load;
+    // f = c R_z(−β): c-components are R_z(−β) times f-components.
+    const Mat3 t_cf = rotation_matrix(Vec3(0.0, 0.0, -st.pitch_rad[b]));
+    for (const Mat3& t : {t_cf, Mat3(Mat3::Identity())}) {
+      const Vec3 f = t * root.head<3>(), m = t * root.tail<3>(), d = t * o.tip_displacement_m;
+      for (int i = 0; i < 3; ++i) out[k++] = f[i] / 1e3;
+      for (int i = 0; i < 3; ++i) out[k++] = m[i] / 1e3;
+      for (int i = 0; i < 3; ++i) out[k++] = d[i];
+    }
+    const beam::BeamModel& model = rotor_.params().blade;
+    const beam::BeamState& s = st.blades[b];
+    const Vec3 tip_rotation = rotation_vector(s.orientation.back() * model.nodes.back().orientation.transpose());
+    for (int i = 0; i < 3; ++i) out[k++] = tip_rotation[i] * kDeg;
+    const Vec3 d_c = t_cf * o.tip_displacement_m;
+    out[k++] = d_c.x();
+    out[k++] = d_c.y();
+    out[k++] = -tip_rotation.z() * kDeg;  // pitch toward feather turns f by −β about z
+    for (int i = 0; i < 3; ++i) out[k++] = root[i];
+    for (int i = 0; i < 3; ++i) out[k++] = root[3 + i];
+    for (int i = 0; i < 3; ++i) out[k++] = o.tip_displacement_m[i];
+    out[k++] = st.pitch_rad[b] * kDeg;
+  }
+  const FlexibleRotor::HubLoad hub = rotor_.hub_load();
+  const ShaftMotion& sh = rotor_.shaft();
+  const double hub_inertia_torque = rotor_.params().hub_inertia_kg_m2 *
+                                    (st.spin.rotor_mean_acceleration_rad_s2 +
+                                     sh.orientation.col(0).dot(sh.angular_acceleration_rad_s2));
+  const double thrust = hub.force_h_N.x() / 1e3, torque = (hub.moment_h_N_m.x() - hub_inertia_torque) / 1e3;
+  out[k++] = thrust;
+  out[k++] = torque;
+  out[k++] = thrust;
+  out[k++] = torque;
+}
+
+}  // namespace fowtsim::driver
