@@ -6,6 +6,9 @@
 namespace fowtsim::driver {
 
 io::Schema waves_schema();
+// model elevation_series: reads `file` (relative to the directory of the deck file that names it)
+// into WaveParams::elevation_record — two columns (time s, elevation m), or the Wave1Elev channel of
+// an OpenFAST .out/.outb or our .h5 output; InputError naming file and line on a bad record.
 waves::WaveParams wave_params(const io::ValidatedDeck& section);
 
 }  // namespace fowtsim::driver

@@ -43,4 +43,31 @@ const double* InverseRealFft::execute() {
   return out_;
 }
 
+ForwardRealFft::ForwardRealFft(std::size_t n) : n_(n) {
+  in_ = static_cast<double*>(fftw_malloc(sizeof(double) * n));
+  out_ = reinterpret_cast<std::complex<double>*>(fftw_malloc(sizeof(fftw_complex) * (n / 2 + 1)));
+  if (!in_ || !out_) {
+    fftw_free(in_);
+    fftw_free(out_);
+    throw std::bad_alloc();
+  }
+  std::fill(in_, in_ + n_, 0.0);
+  std::lock_guard lock(planner_mutex());
+  plan_ = fftw_plan_dft_r2c_1d(static_cast<int>(n), in_, reinterpret_cast<fftw_complex*>(out_), FFTW_ESTIMATE);
+}
+
+ForwardRealFft::~ForwardRealFft() {
+  {
+    std::lock_guard lock(planner_mutex());
+    if (plan_) fftw_destroy_plan(static_cast<fftw_plan>(plan_));
+  }
+  fftw_free(in_);
+  fftw_free(out_);
+}
+
+const std::complex<double>* ForwardRealFft::execute() {
+  fftw_execute(static_cast<fftw_plan>(plan_));
+  return out_;
+}
+
 }  // namespace fowtsim::waves::detail

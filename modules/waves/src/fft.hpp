@@ -32,4 +32,25 @@ class InverseRealFft {
   void* plan_ = nullptr;
 };
 
+// Forward real FFT through FFTW (r2c, unnormalised), FFTW_ESTIMATE as above:
+//   X_n = Σ_{j=0}^{N−1} x_j e^{−2πi jn/N},  n = 0 … N/2.
+class ForwardRealFft {
+ public:
+  explicit ForwardRealFft(std::size_t n);
+  ~ForwardRealFft();
+  ForwardRealFft(const ForwardRealFft&) = delete;
+  ForwardRealFft& operator=(const ForwardRealFft&) = delete;
+
+  std::size_t size() const { return n_; }
+  double* samples() { return in_; }  // x_0 … x_{N−1}
+  // Runs the transform; the result (N/2 + 1 entries) stays valid until the next execute().
+  const std::complex<double>* execute();
+
+ private:
+  std::size_t n_ = 0;
+  double* in_ = nullptr;
+  std::complex<double>* out_ = nullptr;
+  void* plan_ = nullptr;
+};
+
 }  // namespace fowtsim::waves::detail

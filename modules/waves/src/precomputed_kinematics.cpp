@@ -129,6 +129,9 @@ PrecomputedKinematics::PrecomputedKinematics(const WaveField& field, std::span<c
     fft->clear();
     std::complex<double>* c = fft->coefficients();
     for (std::size_t n = 0; n < n_comp; ++n) c[components[n].harmonic] = base[n] * transfer(n);
+    // A Nyquist component (a replayed record of even length, oversampling 1): c2r takes c_{M/2} once
+    // and only its real part, exactly Re[T A e^{−iks} e^{iπj}] on the samples: undo the halving.
+    if (2 * components.back().harmonic == samples_) c[samples_ / 2] *= 2.0;
     const double* y = fft->execute();
     for (std::size_t j = 0; j < samples_; ++j) out[j * stride] = y[j];
   };

@@ -81,6 +81,47 @@ WaveField::WaveField(const WaveParams& p) : params_(p) {
       samples_ = n_samples;
       duration_s_ = p.duration_s;
     }
+  } else if (p.model == WaveModel::elevation_series) {
+    // Replayed sea (elevation_record.hpp, README "Replaying a sea"; OpenFAST SeaState WaveMod 5).
+    const ElevationRecord& record = *p.elevation_record;  // present: validate() checked it
+    const RecordGrid grid = check_elevation_record(record);
+    const std::size_t n_samples = grid.samples;
+    detail::ForwardRealFft fft(n_samples);
+    std::copy(record.elevation_m.begin(), record.elevation_m.end(), fft.samples());
+    const std::complex<double>* x = fft.execute();  // X_n = Σ_j η_j e^{−2πi jn/N}
+    const double n_double = static_cast<double>(n_samples);
+    removed_mean_m_ = x[0].real() / n_double;        // X₀/N: dropped with the n = 0 term
+    const double d_omega = 2.0 * kPi / grid.duration_s;
+    const double f_low = p.cutoff_low_hz;
+    const double f_high = p.cutoff_high_hz ? *p.cutoff_high_hz : 0.5 / grid.step_s;
+    const double start_turns = grid.start_s / grid.duration_s;  // t₀/D
+    std::vector<WaveComponent> kept;
+    // η_j − mean = (1/N) Σ_{n=1}^{N−1} X_n e^{2πi jn/N} = Σ_{0<n<N/2} Re[(2/N) X_n e^{2πi jn/N}]
+    // + (X_{N/2}/N) (−1)^j for even N, and 2π jn/N = ω_n (t_j − t₀): hence A_n = (2/N) X_n e^{−iω_n t₀},
+    // and A_{N/2} = (X_{N/2}/N) e^{−iω_{N/2} t₀} (X_{N/2} is real). The Nyquist term is kept so that the
+    // record is reproduced exactly (a window of a longer sea leaks into it: mm on a metre sea); its
+    // sine part, invisible at the samples, is taken as zero (the band-limited interpolant).
+    for (std::size_t n = 1; 2 * n <= n_samples; ++n) {
+      const double f = static_cast<double>(n) / grid.duration_s;
+      if (f < f_low || f > f_high) continue;
+      if (x[n] == std::complex<double>(0.0, 0.0)) continue;
+      // ω_n t₀ = 2π (n t₀/D), reduced to a fraction of a turn first so a late start keeps its digits.
+      const double turns = std::fmod(static_cast<double>(n) * start_turns, 1.0);
+      WaveComponent w;
+      w.harmonic = n;
+      w.omega_rad_s = d_omega * static_cast<double>(n);
+      const double scale = (2 * n == n_samples ? 1.0 : 2.0) / n_double;
+      w.amplitude_m = scale * x[n] * std::polar(1.0, -2.0 * kPi * turns);
+      w.wavenumber_rad_m = wavenumber(w.omega_rad_s, p.depth_m, p.gravity_m_s2);
+      spectral_m0_ += 0.5 * std::norm(w.amplitude_m);
+      kept.push_back(w);
+    }
+    expected_m0_ = spectral_m0_;
+    if (!kept.empty()) {
+      components_ = std::move(kept);
+      samples_ = n_samples;
+      duration_s_ = grid.duration_s;
+    }
   }
 }
 

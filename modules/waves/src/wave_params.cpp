@@ -64,7 +64,7 @@ void validate(const WaveParams& p) {
   }
 
   const bool dt_ok = finite(p.dt_s) && p.dt_s > 0.0;
-  if (p.model != WaveModel::still && !dt_ok)
+  if (p.model != WaveModel::still && p.model != WaveModel::elevation_series && !dt_ok)
     add("waves.dt_s", fmt::format("expected a time step > 0, found {}", p.dt_s));
 
   if (p.model == WaveModel::regular) {
@@ -129,6 +129,37 @@ void validate(const WaveParams& p) {
     }
   }
 
+  if (p.model == WaveModel::elevation_series) {
+    // The record sets D and Δt (duration_s, dt_s are not used); only the cut-offs are checked
+    // against its Nyquist frequency.
+    std::optional<RecordGrid> grid;
+    if (!p.elevation_record) {
+      add("waves.file", "model elevation_series needs an elevation record (deck key file)");
+    } else {
+      try {
+        grid = check_elevation_record(*p.elevation_record);
+      } catch (const InputError& e) {
+        add("waves.file", e.message());
+      }
+    }
+    if (!(finite(p.cutoff_low_hz) && p.cutoff_low_hz >= 0.0))
+      add("waves.cutoff_low_hz", fmt::format("expected a frequency >= 0, found {}", p.cutoff_low_hz));
+    if (p.cutoff_high_hz && !(finite(*p.cutoff_high_hz) && *p.cutoff_high_hz > 0.0))
+      add("waves.cutoff_high_hz", fmt::format("expected a frequency > 0, found {}", *p.cutoff_high_hz));
+    else if (grid) {
+      const double nyquist_hz = 0.5 / grid->step_s;
+      const double high = p.cutoff_high_hz ? *p.cutoff_high_hz : nyquist_hz;
+      if (high > nyquist_hz * (1.0 + 1e-12))
+        add("waves.cutoff_high_hz",
+            fmt::format("cutoff_high_hz = {} Hz is above the Nyquist frequency 1/(2 dt) = {} Hz of the record "
+                        "(dt = {} s): the record holds nothing above it",
+                        high, nyquist_hz, grid->step_s));
+      else if (finite(p.cutoff_low_hz) && p.cutoff_low_hz >= high)
+        add("waves.cutoff_low_hz, waves.cutoff_high_hz",
+            fmt::format("expected cutoff_low_hz < cutoff_high_hz ({} Hz), found {} Hz", high, p.cutoff_low_hz));
+    }
+  }
+
   if (problems.empty()) return;
   std::string keys;
   std::string message = problems.size() == 1 ? std::string() : fmt::format("{} problems: ", problems.size());
@@ -140,12 +171,21 @@ void validate(const WaveParams& p) {
                    message);
 }
 
+WaveParams with_elevation_record(WaveParams base, std::span<const double> time_s, std::span<const double> elevation_m,
+                                 std::string source) {
+  base.model = WaveModel::elevation_series;
+  base.elevation_record =
+      std::make_shared<const ElevationRecord>(make_elevation_record(time_s, elevation_m, std::move(source)));
+  return base;
+}
+
 std::string_view to_string(WaveModel model) {
   switch (model) {
     case WaveModel::still: return "still";
     case WaveModel::regular: return "regular";
     case WaveModel::jonswap: return "jonswap";
     case WaveModel::pierson_moskowitz: return "pm";
+    case WaveModel::elevation_series: return "elevation_series";
   }
   return "?";
 }
@@ -155,9 +195,10 @@ std::string_view to_string(Stretching stretching) {
 }
 
 WaveModel parse_wave_model(std::string_view text) {
-  for (WaveModel m : {WaveModel::still, WaveModel::regular, WaveModel::jonswap, WaveModel::pierson_moskowitz})
+  for (WaveModel m : {WaveModel::still, WaveModel::regular, WaveModel::jonswap, WaveModel::pierson_moskowitz,
+                      WaveModel::elevation_series})
     if (text == to_string(m)) return m;
-  throw InputError({"waves", std::nullopt, "waves.model", "one of still, regular, jonswap, pm"},
+  throw InputError({"waves", std::nullopt, "waves.model", "one of still, regular, jonswap, pm, elevation_series"},
                    fmt::format("unknown wave model '{}'", text));
 }
 

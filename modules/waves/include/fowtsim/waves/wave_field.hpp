@@ -62,7 +62,10 @@ class WaveField {
   //     components with f_n outside [cutoff_low_hz, cutoff_high_hz] are dropped.
   //   regular: one component A = H/2 e^{iφ} at harmonic 1 of a record of one period D = T, sampled
   //     at N = max(⌈T/dt⌉, 8) points (dt' = T/N ≤ dt).
-  //   still (or Hs = 0, H = 0): no components; a calm record of 4 samples.
+  //   elevation_series: the N record samples, by one forward FFT (elevation_record.hpp): D = N Δt,
+  //     A_n = (2/N) X_n e^{−iω_n t₀} for n = 1 … ⌊N/2⌋ inside the cut-offs (mean dropped; the Nyquist
+  //     term of an even N kept, with 1/N), so η(0, 0, t_j) = η_j − mean; the sea repeats with period D.
+  //   still (or Hs = 0, H = 0, a constant record): no components; a calm record of 4 samples.
   explicit WaveField(const WaveParams& params);
 
   const WaveParams& params() const { return params_; }
@@ -76,10 +79,13 @@ class WaveField {
   bool calm() const { return components_.empty(); }
   double highest_wavenumber_rad_m() const;                       // k of the highest component (0 if calm)
 
-  // Spectral bookkeeping (irregular seas; regular: a²/2 and the same; still: 0).
+  // Spectral bookkeeping (irregular seas; regular: a²/2 and the same; elevation_series: the variance
+  // of the kept components, both; still: 0).
   double spectral_m0_m2() const { return spectral_m0_; }   // ∫₀^∞ S dω of the continuous spectrum = Hs²/16
   double expected_m0_m2() const { return expected_m0_; }   // Σ S(ω_n) Δω over the kept harmonics
   double record_m0_m2() const;                             // Σ |A_n|²/2: the variance of the record
+  double removed_mean_m() const { return removed_mean_m_; }  // elevation_series: mean of the record
+                                                           //   samples, removed [m]; 0 otherwise
 
   // Direct evaluation by summation over the components (any point, any time; for checks and moving
   // points). Cost O(number of components). Stretching as in params() unless given.
@@ -101,6 +107,7 @@ class WaveField {
   std::vector<WaveComponent> components_;
   double spectral_m0_ = 0.0;
   double expected_m0_ = 0.0;
+  double removed_mean_m_ = 0.0;
 };
 
 }  // namespace fowtsim::waves

@@ -6,19 +6,25 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "fowtsim/waves/elevation_record.hpp"
+
 namespace fowtsim::waves {
 
-// `model:` still | regular | jonswap | pm
+// `model:` still | regular | jonswap | pm | elevation_series
 enum class WaveModel {
   still,              // no waves: calm water, every kinematic quantity zero
   regular,            // one Airy wave: height_m, period_s, phase_deg
   jonswap,            // irregular, JONSWAP spectrum (IEC 61400-3 form): hs_m, tp_s, gamma
   pierson_moskowitz,  // irregular, Pierson–Moskowitz spectrum (JONSWAP with γ = 1): hs_m, tp_s
+  elevation_series,   // the sea rebuilt from a recorded η(0, 0, t) (OpenFAST SeaState WaveMod 5):
+                      //   elevation_record (deck key `file`); duration_s, dt_s come from the record
 };
 
 // `stretching:` none | wheeler
@@ -45,9 +51,13 @@ struct WaveParams {
                                        //   record repeats with period D (as HydroDyn's WaveTMax)
   double dt_s = 0.25;                  // `dt_s`: record time step [s]; D/dt must be a whole number;
                                        //   Nyquist frequency 1/(2 dt) bounds the spectrum
+  // Irregular seas and elevation_series.
   double cutoff_low_hz = 0.0;          // `cutoff_low_hz`: components below are zeroed [Hz], ≥ 0
   std::optional<double> cutoff_high_hz;  // `cutoff_high_hz`: components above are zeroed [Hz];
                                        //   absent = Nyquist 1/(2 dt); above Nyquist is an error
+  // Replayed sea (elevation_series).
+  std::shared_ptr<const ElevationRecord> elevation_record;  // `file`: η(0, 0, t) as read by the driver
+                                       //   (shared: parameters are copied, the record is not)
   // Regular waves.
   double height_m = 0.0;               // `height_m`: crest-to-trough height H [m], ≥ 0
   double period_s = 0.0;               // `period_s`: wave period T [s], > 0, ≥ 2 dt_s
@@ -63,6 +73,12 @@ struct WaveParams {
                                        //   (x, y) [m] of Wave1Elev, Wave2Elev, … (1 to 9 probes)
 };
 
+// `base` with model elevation_series and the record (time_s[j], elevation_m[j]) at x = y = 0; the
+// other keys (heading, depth, stretching, cut-offs, …) are kept. The record is checked when the
+// WaveField is built (or by validate).
+WaveParams with_elevation_record(WaveParams base, std::span<const double> time_s, std::span<const double> elevation_m,
+                                 std::string source = "elevation record");
+
 // IEC 61400-3 (2009) Annex B default peak shape (as HydroDyn's WavePkShpDefault):
 // γ = 5 for Tp/√Hs ≤ 3.6, exp(5.75 − 1.15 Tp/√Hs) for 3.6 < Tp/√Hs ≤ 5, 1 above (Tp in s, Hs in m).
 // Hs = 0 gives 1.
@@ -75,7 +91,7 @@ double peak_shape(const WaveParams& params);
 // (module "waves", variable = the deck keys concerned). Called by WaveField's constructor.
 void validate(const WaveParams& params);
 
-// Deck spellings: "still", "regular", "jonswap", "pm"; "none", "wheeler". The parsers throw
+// Deck spellings: "still", "regular", "jonswap", "pm", "elevation_series"; "none", "wheeler". The parsers throw
 // InputError naming the allowed values.
 std::string_view to_string(WaveModel model);
 std::string_view to_string(Stretching stretching);
