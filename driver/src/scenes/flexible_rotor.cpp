@@ -130,7 +130,7 @@ void FlexibleRotor::evaluate_aero(double t, const ShaftMotion& shaft) {
 }
 
 void FlexibleRotor::start(const ShaftMotion& shaft, double azimuth_rad, double rotor_speed_rad_s, double pitch_rad,
-                          const RotorDemands& demands, bool static_start) {
+                          const RotorDemands& demands, Start how) {
   shaft_ = shaft;
   state_.spin = SpinState{};
   state_.spin.rotor_azimuth_rad = state_.spin.generator_azimuth_rad = azimuth_rad;
@@ -139,17 +139,17 @@ void FlexibleRotor::start(const ShaftMotion& shaft, double azimuth_rad, double r
   state_.pitch_rate_rad_s.fill(0.0);
   state_.pitch_acceleration_rad_s2.fill(0.0);
   for (int b = 0; b < kBlades; ++b) state_.blades[b] = beam::make_state(params_.blade);
-  const double gravity = demands.gravity ? params_.gravity_m_s2 : 0.0;
-  if (static_start) {
-    // Static equilibrium under the steady frame motion (centrifugal), gravity and the aero loads
-    // of the deflected blades: two passes of aero ↔ structure make the aero loads consistent with
-    // the deflection they cause to well below the blades' own discretisation error.
-    for (int pass = 0; pass < (aero_ ? 3 : 1); ++pass) {
-      evaluate_aero(0.0, shaft);
+  const bool loads = how == Start::static_loads;
+  const double gravity = demands.gravity && loads ? params_.gravity_m_s2 : 0.0;
+  if (how != Start::undeformed) {
+    // Static equilibrium under the steady frame motion (centrifugal), and with static_loads
+    // gravity and the aero loads of the deflected blades: three passes of aero ↔ structure.
+    for (int pass = 0; pass < (aero_ && loads ? 3 : 1); ++pass) {
+      if (loads) evaluate_aero(0.0, shaft);
       for (int b = 0; b < kBlades; ++b) {
         beam::BeamInput in;
         in.frame = in_f(frame(shaft, b), gravity);
-        in.node_loads = aero_loads_[b];
+        if (loads) in.node_loads = aero_loads_[b];
         beam::StaticOptions options;
         options.load_steps = pass == 0 ? 5 : 1;
         beam::solve_static(params_.blade, in, state_.blades[b], options);

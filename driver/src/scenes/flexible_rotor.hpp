@@ -114,11 +114,12 @@ class FlexibleRotor {
   FlexibleRotor(const FlexibleRotor&) = delete;  // the steppers refer to params_.blade
   FlexibleRotor& operator=(const FlexibleRotor&) = delete;
 
-  // Blades at their static solution under the frame motion, gravity and (if any) aerodynamics
-  // at t = 0 (`static_start`), or undeformed and moving rigidly with the hub; spin and pitch
-  // from the arguments.
+  // How the blades start, moving rigidly with their root frames: at their static solution under
+  // the frame motion, gravity and (if any) aerodynamics at t = 0; at the static solution under
+  // the frame motion alone (BeamDyn's QuasiStaticInit, as OpenFAST starts); or undeformed.
+  enum class Start { static_loads, centrifugal, undeformed };
   void start(const ShaftMotion& shaft, double azimuth_rad, double rotor_speed_rad_s, double pitch_rad,
-             const RotorDemands& demands, bool static_start);
+             const RotorDemands& demands, Start how);
 
   // n small steps from t to t + ΔT through the shaft motion interpolated between `begin` and
   // `end`. Returns the blades' root loads on the hub averaged over the step (trapezoidal weights

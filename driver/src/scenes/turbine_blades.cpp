@@ -23,9 +23,10 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 
 Schema blades_schema() {
   std::vector<io::SchemaField> fields = beam_schema_fields(23);
-  fields.push_back({"start", Schema::choice({"static", "undeformed"}).default_value("static")
+  fields.push_back({"start", Schema::choice({"static", "centrifugal", "undeformed"}).default_value("static")
                                  .doc("static: each blade starts from its static solution under the initial frame motion, "
-                                      "gravity and aero loads; undeformed: weightless shape, as OpenFAST starts")});
+                                      "gravity and aero loads; centrifugal: under the frame motion alone (BeamDyn's "
+                                      "QuasiStaticInit, as OpenFAST's BeamDyn decks start); undeformed: the unloaded shape")});
   fields.push_back({"coupling", Schema::choice({"multi_rate", "predictor_corrector", "single_rate"})
                                     .default_value("multi_rate").doc("exchange between the multibody (ΔT) and the blades (Δt)")});
   fields.push_back({"substeps", Schema::integer().at_least(1).at_most(10000).default_value(4)
@@ -96,12 +97,15 @@ TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Mod
   if (mode_ == CouplingMode::single_rate && substeps_ != 1)
     throw InputError({"floating", std::nullopt, "blades.substeps", "1 with single_rate"},
                      where(deck, "blades.substeps") + ": single_rate coupling takes one blade step per large step");
-  static_start_ = b.string("start") == "static";
+  const std::string how = b.string("start");
+  start_ = how == "static" ? FlexibleRotor::Start::static_loads
+           : how == "centrifugal" ? FlexibleRotor::Start::centrifugal
+                                  : FlexibleRotor::Start::undeformed;
 }
 
 void TurbineBlades::start(const ShaftMotion& shaft, const multibody::State& state, double pitch_rad,
                           const RotorDemands& demands) {
-  rotor_.start(shaft, state.rotor_azimuth_rad, state.rotor_speed_rad_s, pitch_rad, demands, static_start_);
+  rotor_.start(shaft, state.rotor_azimuth_rad, state.rotor_speed_rad_s, pitch_rad, demands, start_);
   held_ = rotor_.hub_load();
   use_extrapolated_spin_profile(0.0);
 }
@@ -164,7 +168,11 @@ void TurbineBlades::copy_spin(multibody::State& state) const {
 std::string TurbineBlades::description() const {
   return fmt::format("3 flexible MBBT blades ({} finite volumes, {} start), rotor spin solved with them; {} coupling, "
                      "{} blade steps per large step",
-                     rotor_.params().blade.node_count(), static_start_ ? "static" : "undeformed", to_string(mode_),
+                     rotor_.params().blade.node_count(),
+                     start_ == FlexibleRotor::Start::static_loads ? "static"
+                     : start_ == FlexibleRotor::Start::centrifugal ? "centrifugal"
+                                                                    : "undeformed",
+                     to_string(mode_),
                      substeps_);
 }
 

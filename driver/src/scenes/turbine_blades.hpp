@@ -80,7 +80,7 @@ class TurbineBlades {
   FlexibleRotor rotor_;
   CouplingMode mode_ = CouplingMode::multi_rate;
   int substeps_ = 4;
-  bool static_start_ = true;
+  FlexibleRotor::Start start_ = FlexibleRotor::Start::static_loads;
   FlexibleRotor::HubLoad held_, held_next_;
   SpinState spin_before_;                         // fast spin at the start of the last step
   SpinProfile profile_;
