@@ -14,6 +14,8 @@
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/version.hpp"
 #include "fowtsim/io/readers.hpp"
+#include "run/interrupt.hpp"
+#include "run/option_checks.hpp"
 #include "run/run_scene.hpp"
 #include "cli/turbulence_command.hpp"
 #include "decks/wind_deck.hpp"
@@ -29,12 +31,20 @@ namespace {
 
 constexpr int kExitFail = 1, kExitInput = 2, kExitNumerical = 3;
 
+// SIGINT/SIGTERM stop the run at the end of the current step; the files are closed as
+// "interrupted at t = …", the summary is printed and the exit code is 128 + signal (130, 143).
 int run_command(const RunRequest& request) {
+  const InterruptHandlers handlers;
   ProgressBar bar(stdout);
   const RunReport report = run_scene(request, [&](double t, double t_max) { bar.update(t, t_max); });
   bar.done();
   print_run_summary(stdout, report);
-  return 0;
+  return report.interrupted_by ? interrupted_exit_code(report.interrupted_by) : 0;
+}
+
+// "--tmax abc" or "--tmax -1": say what is wanted, not CLI11's conversion message.
+CLI::Validator positive(const char* what) {
+  return CLI::Validator([what](std::string& text) { return positive_number_problem(text, what); }, "");
 }
 
 int compare_command(const std::string& ref, const std::string& test, const std::vector<std::string>& channels,
@@ -48,16 +58,11 @@ int compare_command(const std::string& ref, const std::string& test, const std::
   return report.pass() ? 0 : kExitFail;
 }
 
-int verify_command(std::vector<std::string> cases) {
-  if (cases.empty() || (cases.size() == 1 && cases[0] == "all")) cases = verification_case_names();
-  std::vector<VerificationRow> rows;
-  for (const std::string& name : cases) {
-    for (VerificationRow& row : run_verification_case(name, stdout)) rows.push_back(std::move(row));
-  }
-  print_verification(stdout, rows);
-  const bool pass = std::all_of(rows.begin(), rows.end(), [](const VerificationRow& r) { return r.pass; });
-  fmt::print("{}\n", pass ? "all verification checks PASS" : "some verification checks FAIL");
-  return pass ? 0 : kExitFail;
+// A case without its reference data is SKIPPED with the reason; nothing verified is a failure.
+int verify_command(const std::vector<std::string>& cases, const std::filesystem::path& shared_dir) {
+  const VerificationOutcome outcome = run_verification(cases, shared_dir, stdout);
+  print_verification_outcome(stdout, outcome);
+  return outcome.exit_code() == 0 ? 0 : kExitFail;
 }
 
 int bench_command(std::vector<std::string> cases) {
@@ -82,18 +87,24 @@ int main(int argc, char** argv) {
   run->add_option("deck", request.deck_path, "scene deck (YAML), or a BeamDyn driver input (bd_driver.inp)")
       ->required()
       ->check(CLI::ExistingFile);
-  run->add_option("-o,--output", out_base, "output path without extension (default runs/<deck name>)");
+  run->add_option("-o,--output", out_base,
+                  "output path (default runs/<deck file name without extension>). -o x.h5 writes x.h5 and -o x.out "
+                  "writes x.out (the extension picks the format over the deck's output.format); without .h5/.out the "
+                  "format's extension is appended (-o x → x.h5). With --out-format both, a given .h5/.out only names "
+                  "the pair: -o x.h5 writes x.h5 and x.out. An extension that contradicts --out-format h5|out is an "
+                  "error. Files are written as <name>.running.<ext> and renamed when the run ends");
   run->add_option("--out-format", out_format, "output format")->check(CLI::IsMember({"h5", "out", "both"}));
-  run->add_option("--tmax", tmax, "simulated time [s], overrides simulation.t_max_s")->check(CLI::PositiveNumber);
+  run->add_option("--tmax", tmax, "simulated time [s], overrides simulation.t_max_s")
+      ->check(positive("a positive number of seconds"));
   int segments = 0;
   std::string integrator;
-  run->add_option("--segments", segments, "finite volumes per beam (BeamDyn cases; default 48)")->check(CLI::PositiveNumber);
+  run->add_option("--segments", segments, "finite volumes per beam (BeamDyn cases; default 48)")->check(positive("a positive whole number"));
   run->add_option("--integrator", integrator, "beam step integrator")->check(CLI::IsMember({"generalized_alpha", "erk"}));
   int matrix_age = 0;
   run->add_option("--matrix-age", matrix_age,
                   "generalized-α: rebuild the beam step matrix at least every N steps (1 = every step, "
                   "the seed's scheme; default 20)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive("a positive whole number"));
 
   std::string ref, test, tolerance_file;
   std::vector<std::string> channels;
@@ -110,17 +121,20 @@ int main(int argc, char** argv) {
   std::vector<std::string> cases;
   auto* verify = app.add_subcommand("verify", "run verification cases against analytic or published answers");
   verify->add_option("cases", cases, "cases (default all): coupling, beam-rollup, beam-curved, beam-timestep, beam-beamdyn, beam-frequencies, sea");
-  std::string shared_dir = "../shared";
-  verify->add_option("--shared", shared_dir, "directory holding reference/ (default ../shared)");
+  std::string shared_dir = default_shared_dir().string();
+  verify->add_option("--shared", shared_dir,
+                     "directory holding reference/ (default ../shared next to the repository: " + shared_dir + ")");
   std::vector<std::string> bench_cases;
   auto* bench = app.add_subcommand("bench", "benchmark run time against error");
   bench->add_option("cases", bench_cases, "cases (default all): coupling, beam, hydro, waves, aero, multibody");
-  bench->add_option("--shared", shared_dir, "directory holding reference/ (default ../shared)");
+  bench->add_option("--shared", shared_dir, "directory holding reference/ (default " + shared_dir + ")");
 
   std::string wind_deck, wind_out;
   auto* turbulence = app.add_subcommand("turbulence", "generate a turbulent wind field (IEC Kaimal) to .bts and .h5");
   turbulence->add_option("deck", wind_deck, "deck with a `wind:` section of model turbulent")->required()->check(CLI::ExistingFile);
-  turbulence->add_option("-o,--output", wind_out, "output path without extension (default runs/<deck name>)");
+  turbulence->add_option("-o,--output", wind_out,
+                         "output path: writes BASE.bts and BASE.h5; a given .bts or .h5 extension is replaced, not "
+                         "appended (-o tb.bts → tb.bts, tb.h5; default runs/<deck name>)");
 
   try {
     app.parse(argc, argv);
@@ -156,8 +170,8 @@ int main(int argc, char** argv) {
                              atol_opt->count() ? std::optional(atol) : std::nullopt, tolerance_file);
     }
     if (*turbulence) return run_turbulence_command(wind_deck, wind_out.empty() ? std::nullopt : std::optional<std::filesystem::path>(wind_out), stdout);
+    if (*verify) return verify_command(cases, shared_dir);
     set_shared_dir(shared_dir);
-    if (*verify) return verify_command(cases);
     if (*bench) return bench_command(bench_cases);
   } catch (const NumericalError& e) {
     std::fflush(stdout);

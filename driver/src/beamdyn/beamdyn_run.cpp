@@ -14,6 +14,7 @@
 #include "fowtsim/beam/solvers.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/version.hpp"
+#include "run/interrupt.hpp"
 #include "run/output_set.hpp"
 
 namespace fowtsim::driver {
@@ -85,9 +86,11 @@ RunReport run_single_beam(const BeamDynSetup& setup_in, const SingleBeamRun& how
   std::vector<ChannelInfo> written;
   for (std::size_t i : picked) written.push_back(all[i]);
 
-  OutputSet outputs(request.output_base.value_or(std::filesystem::path("runs") / request.deck_path.parent_path().filename()),
+  const long steps = setup.dynamic ? std::lround((setup.t_final_s - setup.t_initial_s) / setup.dt_s) : 0;
+  OutputSet outputs(request.output_base.value_or(std::filesystem::path("runs") / request.deck_path.stem()),
                     request.output_format.value_or("h5"));
   report.outputs = outputs.paths();
+  report.t_max_s = setup.t_final_s;
   io::RunMetadata metadata;
   metadata.version = kVersion;
   metadata.deck_path = request.deck_path.string();
@@ -133,9 +136,9 @@ RunReport run_single_beam(const BeamDynSetup& setup_in, const SingleBeamRun& how
         solve_static_robustly(model, input, state);
       }
       write_row(t, false);
-      const long steps = std::lround((setup.t_final_s - setup.t_initial_s) / setup.dt_s);
       beam::DynamicStepper stepper(model, options);
-      for (long k = 1; k <= steps; ++k) {
+      long k = 1;
+      for (; k <= steps && interrupt_signal() == 0; ++k) {  // a signal stops the run at the end of a step
         const double t0 = setup.t_initial_s + (k - 1) * setup.dt_s;
         beamdyn_input(setup, model, state, t0 + stepper.input_time_fraction() * setup.dt_s, input);
         stepper.step(input, setup.dt_s, state);
@@ -143,7 +146,8 @@ RunReport run_single_beam(const BeamDynSetup& setup_in, const SingleBeamRun& how
         if (k % how.decimation == 0) write_row(t, false);
         if (progress) progress(t, setup.t_final_s);
       }
-      report.large_steps = steps;
+      report.large_steps = k - 1;
+      if (k <= steps) report.interrupted_by = interrupt_signal();
     }
   } catch (const NumericalError& e) {
     outputs.finish({elapsed(), std::string("failed: ") + e.what(), t});
@@ -151,7 +155,7 @@ RunReport run_single_beam(const BeamDynSetup& setup_in, const SingleBeamRun& how
   }
   report.wall_s = elapsed();
   report.simulated_s = t;
-  outputs.finish({report.wall_s, "completed", t});
+  outputs.finish({report.wall_s, report.interrupted_by ? interrupted_status(t, report.interrupted_by) : "completed", t});
   return report;
 }
 

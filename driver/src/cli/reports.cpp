@@ -4,12 +4,17 @@
 
 #include <fmt/format.h>
 
+#include "run/interrupt.hpp"
+
 namespace fowtsim::driver {
 
 void print_run_summary(std::FILE* out, const RunReport& r) {
   fmt::print(out, "── fowtsim run summary ──────────────────────────────\n");
   fmt::print(out, "  simulated time   {:.3f} s ({} large steps × {} substeps, {})\n", r.simulated_s, r.large_steps,
              r.substeps, r.coupling);
+  if (r.interrupted_by)
+    fmt::print(out, "  status           interrupted at t = {:.6g} s of {:.6g} s ({}): the outputs hold every step up to it\n",
+               r.simulated_s, r.t_max_s, signal_name(r.interrupted_by));
   fmt::print(out, "  wall time        {:.3f} s\n", r.wall_s);
   fmt::print(out, "  real-time factor {:.1f}x faster than real time\n", r.wall_s > 0 ? r.simulated_s / r.wall_s : INFINITY);
   for (const auto& p : r.outputs) fmt::print(out, "  output           {}\n", p.string());

@@ -8,6 +8,7 @@
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/turbsim_bts.hpp"
 #include "fowtsim/wind/turbulence_generator.hpp"
+#include "run/output_set.hpp"
 
 namespace fowtsim::driver {
 
@@ -27,7 +28,9 @@ int run_turbulence_command(const std::filesystem::path& deck_path, const std::op
   const wind::WindParams params = wind_params(deck.section("wind"));
   if (params.model != wind::WindModel::turbulent)
     throw InputError({"wind", std::nullopt, "wind.model", "turbulent"}, deck_path.string() + ": wind.model must be turbulent to generate a field");
-  const std::filesystem::path base = base_in.value_or(std::filesystem::path("runs") / deck_path.stem());
+  // -o tb, -o tb.bts and -o tb.h5 all write tb.bts and tb.h5.
+  const std::filesystem::path base =
+      split_known_extension(base_in.value_or(std::filesystem::path("runs") / deck_path.stem()), {".bts", ".h5"}).first;
   if (base.has_parent_path()) std::filesystem::create_directories(base.parent_path());
 
   const auto start = std::chrono::steady_clock::now();

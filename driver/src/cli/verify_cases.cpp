@@ -1,5 +1,6 @@
 #include "cli/verify_cases.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -39,6 +40,54 @@ std::vector<VerificationRow> run_verification_case(const std::string& name, std:
   std::string known;
   for (const std::string& n : verification_case_names()) known += (known.empty() ? "" : ", ") + n;
   throw InputError({"verify", {}, name, "known cases: " + known}, fmt::format("unknown verification case '{}'", name));
+}
+
+int VerificationOutcome::exit_code() const {
+  if (rows.empty()) return 1;
+  return std::all_of(rows.begin(), rows.end(), [](const VerificationRow& r) { return r.pass; }) ? 0 : 1;
+}
+
+VerificationOutcome run_verification(std::vector<std::string> cases, const std::filesystem::path& shared_dir,
+                                     std::FILE* out) {
+  if (cases.empty() || (cases.size() == 1 && cases[0] == "all")) cases = verification_case_names();
+  set_shared_dir(shared_dir);
+  VerificationOutcome outcome;
+  for (const std::string& name : cases) {
+    std::vector<VerificationRow> rows = run_verification_case(name, out);
+    if (rows.empty()) {
+      const std::filesystem::path reference = shared_dir / "reference";
+      outcome.skipped.push_back(
+          {name, std::filesystem::is_directory(reference)
+                     ? std::string("the case ran no check")
+                     : fmt::format("reference data not found under {} (give the folder holding reference/ with --shared DIR)",
+                                   reference.string())});
+    }
+    for (VerificationRow& row : rows) outcome.rows.push_back(std::move(row));
+  }
+  return outcome;
+}
+
+void print_verification_outcome(std::FILE* out, const VerificationOutcome& outcome) {
+  if (!outcome.rows.empty()) print_verification(out, outcome.rows);
+  for (const SkippedCase& s : outcome.skipped) fmt::print(out, "{:<10} SKIPPED: {}\n", s.case_name, s.reason);
+  const std::string skipped =
+      outcome.skipped.empty() ? "" : fmt::format("; {} case{} SKIPPED", outcome.skipped.size(), outcome.skipped.size() == 1 ? "" : "s");
+  if (outcome.rows.empty()) {
+    fmt::print(out, "no verification check ran{}: nothing was verified\n", skipped);
+  } else if (outcome.exit_code() == 0) {
+    fmt::print(out, "all {} verification checks PASS{}\n", outcome.rows.size(), skipped);
+  } else {
+    const auto failed = std::count_if(outcome.rows.begin(), outcome.rows.end(), [](const VerificationRow& r) { return !r.pass; });
+    fmt::print(out, "{} of {} verification checks FAIL{}\n", failed, outcome.rows.size(), skipped);
+  }
+}
+
+std::filesystem::path source_root() { return std::filesystem::path(FOWTSIM_INPUTS_DIR).parent_path().lexically_normal(); }
+
+std::filesystem::path default_shared_dir() {
+  std::filesystem::path root = source_root();
+  if (root.filename().empty()) root = root.parent_path();  // a trailing separator
+  return (root.parent_path() / "shared").lexically_normal();
 }
 
 std::vector<std::string> benchmark_case_names() { return {"coupling", "beam", "hydro", "waves", "aero", "multibody"}; }

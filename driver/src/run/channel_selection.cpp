@@ -4,6 +4,7 @@
 
 #include "decks/deck_helpers.hpp"
 #include "fowtsim/core/error.hpp"
+#include "run/suggest.hpp"
 
 namespace fowtsim::driver {
 
@@ -17,13 +18,21 @@ std::vector<std::size_t> select_channels(const io::ValidatedDeck& deck, const st
     return picked;
   }
   const std::vector<std::string> names = deck.strings("output.channels");
+  std::vector<std::string> known;
+  std::string known_text;
+  for (const ChannelInfo& c : all) {
+    known.push_back(c.name);
+    known_text += (known_text.empty() ? "" : ", ") + c.name;
+  }
   for (std::size_t i = 0; i < names.size(); ++i) {
     const auto index = registry.find(names[i]);
     if (!index) {
-      std::string known;
-      for (const ChannelInfo& c : all) known += (known.empty() ? "" : ", ") + c.name;
-      throw InputError({scene, {}, names[i], "available: " + known},
-                       where(deck, fmt::format("output.channels[{}]", i)) + ": unknown channel '" + names[i] + "'");
+      const std::string suggestion = did_you_mean(names[i], known);
+      const std::string hint = suggestion.empty() ? "available: " + known_text
+                                                  : suggestion + " (available: " + known_text + ")";
+      throw InputError({scene, {}, names[i], hint}, where(deck, fmt::format("output.channels[{}]", i)) +
+                                                        ": unknown channel '" + names[i] + "'" +
+                                                        (suggestion.empty() ? "" : "; " + suggestion));
     }
     picked.push_back(*index);
   }

@@ -1,23 +1,128 @@
 #include "run/run_scene.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <fstream>
+
+#include <fmt/format.h>
+
 #include "beamdyn/beamdyn_run.hpp"
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/io/deck.hpp"
+#include "fowtsim/io/schema.hpp"
+#include "run/output_set.hpp"
+#include "run/suggest.hpp"
 #include "scenes/beam_scene.hpp"
 #include "scenes/floating_scene.hpp"
 #include "scenes/platform_scene.hpp"
-
-#include "fowtsim/io/schema.hpp"
 #include "scenes/scene_schema.hpp"
 #include "scenes/toy_scene.hpp"
 
 namespace fowtsim::driver {
+namespace {
 
-RunReport run_scene(const RunRequest& request, const ProgressCallback& progress) {
+// The top-level keys that make a deck a scene deck, with the scene each one picks.
+constexpr std::array<std::pair<const char*, const char*>, 4> kSceneKeys = {{
+    {"structure", "floating turbine"},
+    {"platform_motion", "platform loads on a prescribed motion"},
+    {"beam", "one clamped beam"},
+    {"toy_oscillators", "the coupling test problem"},
+}};
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+// OpenFAST, its modules' and TurbSim's inputs start with a banner line of dashes
+// ("------- OpenFAST EXAMPLE INPUT FILE ----"); YAML never starts with four dashes.
+bool starts_with_openfast_banner(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos) continue;
+    return line.compare(first, 4, "----") == 0;
+  }
+  return false;
+}
+
+[[noreturn]] void throw_not_a_deck(const std::filesystem::path& path, const std::string& detail) {
+  throw InputError(
+      {"run", std::nullopt, "",
+       "give a fowtsim YAML scene deck (inputs/, `fowtsim --help-deck`); a BeamDyn driver input (bd_driver.inp) "
+       "runs as is; OpenFAST outputs (.out, .outb) are read by `fowtsim compare`"},
+      fmt::format("{}: OpenFAST/TurbSim input is not read by fowtsim run{}", path.string(), detail));
+}
+
+// Stops with a clear message before a non-YAML file reaches the YAML parser.
+void reject_foreign_input(const std::filesystem::path& path) {
+  static const std::array<const char*, 9> kForeign = {".fst", ".dat", ".inp", ".ipt", ".bts", ".wnd",
+                                                      ".out", ".outb", ".h5"};
+  const std::string ext = lower_extension(path);
+  if (std::find(kForeign.begin(), kForeign.end(), ext) != kForeign.end())
+    throw_not_a_deck(path, fmt::format(" (a {} file)", ext));
+  if (starts_with_openfast_banner(path)) throw_not_a_deck(path, " (it starts with an OpenFAST-style banner line)");
+}
+
+// The deck's top-level mapping; a file that is not YAML, is empty, or holds none of the scene keys
+// (a component deck such as hydro.yaml) stops here, saying which keys make a scene.
+void check_scene_keys(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  const bool yaml_named = ext == ".yaml" || ext == ".yml";
+  io::LoadedDeck loaded;
+  try {
+    loaded = io::load_deck(path);
+  } catch (const io::DeckError& e) {
+    const bool syntax = std::any_of(e.issues().begin(), e.issues().end(),
+                                    [](const io::DeckIssue& i) { return i.kind == io::DeckIssueKind::yaml_syntax; });
+    if (syntax && !yaml_named) throw_not_a_deck(path, " (the file is not YAML: " + e.issues().front().to_string() + ")");
+    throw;
+  }
+  const io::DeckNodeKind kind = loaded.root.kind;
+  if (kind != io::DeckNodeKind::map && kind != io::DeckNodeKind::null && !yaml_named)
+    throw_not_a_deck(path, " (the file is not a YAML mapping of deck keys)");
+  std::string keys;
+  std::vector<std::string> scene_keys;
+  for (const auto& [key, scene] : kSceneKeys) {
+    if (loaded.root.find(key)) return;
+    keys += fmt::format("{}`{}` ({})", keys.empty() ? "" : ", ", key, scene);
+    scene_keys.emplace_back(key);
+  }
+  std::string found;
+  std::string suggestion;
+  if (loaded.root.kind == io::DeckNodeKind::map) {
+    for (const io::DeckEntry& e : loaded.root.entries) {
+      found += (found.empty() ? "" : ", ") + e.key;
+      if (suggestion.empty()) suggestion = did_you_mean(e.key, scene_keys);
+    }
+  }
+  const bool empty = kind == io::DeckNodeKind::null || (kind == io::DeckNodeKind::map && loaded.root.entries.empty());
+  const std::string holds = empty                            ? "it is empty"
+                            : found.empty()                  ? "it holds no mapping of keys"
+                                                             : "its top-level keys are " + found;
+  const std::string hint = !suggestion.empty() ? suggestion
+                           : empty ? "start from a shipped scene deck, e.g. inputs/oc3_hywind/turbine_ntm_12mps_irregular.yaml"
+                                   : "a component deck is included from a scene deck (`include: hydro.yaml`), e.g. "
+                                     "inputs/oc3_hywind/turbine_ntm_12mps_irregular.yaml";
+  throw InputError({"run", std::nullopt, "", hint},
+                   fmt::format("{}: no scene to run: a scene deck has one of the top-level keys {}; {}", path.string(), keys,
+                               holds));
+}
+
+}  // namespace
+
+RunReport run_scene(const RunRequest& request_in, const ProgressCallback& progress) {
+  const RunRequest request = resolve_output_names(request_in);
   if (is_beamdyn_driver_file(request.deck_path)) return run_beamdyn_case(request, progress);
+  reject_foreign_input(request.deck_path);
+  check_scene_keys(request.deck_path);
   if (is_beam_scene(request.deck_path)) return run_beam_scene(request, progress);
   if (is_platform_scene(request.deck_path)) return run_platform_scene(request, progress);
   if (is_floating_scene(request.deck_path)) return run_floating_scene(request, progress);
   const io::ValidatedDeck deck = io::read_deck(scene_schema(), request.deck_path);
-  // The toy oscillators are the only scene until the turbine modules land.
   return run_toy_scene(deck, request, progress);
 }
 

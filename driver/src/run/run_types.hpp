@@ -10,7 +10,8 @@ namespace fowtsim::driver {
 
 struct RunRequest {
   std::filesystem::path deck_path;                   // top-level scene deck
-  std::optional<std::filesystem::path> output_base;  // -o: output path without extension
+  std::optional<std::filesystem::path> output_base;  // -o: output path; a .h5/.out extension is
+                                                     // honoured (see resolve_output_names)
   std::optional<std::string> output_format;          // --out-format h5|out|both (overrides the deck)
   std::optional<double> t_max_s;                     // --tmax: overrides simulation.t_max_s [s]
   std::optional<int> beam_segments;                  // --segments: finite volumes per beam
@@ -27,6 +28,8 @@ struct RunReport {
   std::vector<std::filesystem::path> outputs;  // files written
   std::vector<std::string> warnings;           // shown in the summary
   std::vector<std::string> results;            // lines of results asked for by the deck (summary)
+  int interrupted_by = 0;                      // signal that stopped the run early (0: it ran to the end)
+  double t_max_s = 0.0;                        // simulated time the run was asked for [s]
 };
 
 // Called after every large step with the current and the final simulated time [s].

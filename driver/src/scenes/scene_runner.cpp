@@ -1,11 +1,15 @@
 #include "scenes/scene_runner.hpp"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
+
+#include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
 #include "decks/deck_helpers.hpp"
 #include "fowtsim/core/version.hpp"
+#include "run/interrupt.hpp"
 #include "run/output_set.hpp"
 
 namespace fowtsim::driver {
@@ -31,6 +35,16 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
                           const ProgressCallback& progress) {
   const double t_max = request.t_max_s.value_or(deck.number("simulation.t_max_s"));
   const double dt = deck.number("simulation.dt_s");
+  // Every check before any file is opened: a failed start must not touch an earlier output.
+  const long steps = std::lround(t_max / dt);
+  if (steps < 1 || std::abs(static_cast<double>(steps) * dt - t_max) > 1e-9 * t_max) {
+    const std::string culprit = request.t_max_s ? fmt::format("--tmax {:.10g}", t_max)
+                                                : fmt::format("simulation.t_max_s = {:.10g}", t_max);
+    throw InputError({"scene", std::nullopt, request.t_max_s ? "--tmax" : "simulation.t_max_s",
+                      fmt::format("a multiple of dt_s = {:.10g} s, e.g. {:.10g}", dt, std::max(1L, steps) * dt)},
+                     where(deck, "simulation.dt_s") + ": the time step must divide the simulated time (" + culprit +
+                         " is not a whole number of steps of " + fmt::format("{:.10g}", dt) + " s)");
+  }
   const std::string format = request.output_format.value_or(deck.has("output") ? deck.string("output.format") : "h5");
   const long decimation = deck.has("output") ? deck.integer("output.decimation") : 1;
   OutputSet outputs(request.output_base.value_or(std::filesystem::path("runs") / request.deck_path.stem()), format);
@@ -43,6 +57,7 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
 
   RunReport report;
   report.outputs = outputs.paths();
+  report.t_max_s = t_max;
   std::vector<double> row(scene.written.size());
   auto write_row = [&](double t) {
     scene.row(t, row);
@@ -50,15 +65,13 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
   };
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  const long steps = std::lround(t_max / dt);
-  if (steps < 1 || std::abs(static_cast<double>(steps) * dt - t_max) > 1e-9 * t_max)
-    throw InputError({"scene", std::nullopt, "simulation.dt_s", "a step that divides t_max_s"},
-                     where(deck, "simulation.dt_s") + ": the time step must divide t_max_s (a whole number of steps)");
   double t = 0.0;
+  long k = 0;
   try {
     write_row(t);
-    for (long k = 1; k <= steps; ++k) {
+    while (k < steps && interrupt_signal() == 0) {  // a signal stops the run at the end of a step
       scene.step(t, dt);
+      ++k;
       t = static_cast<double>(k) * dt;
       if (k % decimation == 0) write_row(t);
       if (progress) progress(t, t_max);
@@ -69,8 +82,9 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
   }
   report.wall_s = elapsed();
   report.simulated_s = t;
-  report.large_steps = steps;
-  outputs.finish({report.wall_s, "completed", t});
+  report.large_steps = k;
+  if (k < steps) report.interrupted_by = interrupt_signal();
+  outputs.finish({report.wall_s, report.interrupted_by ? interrupted_status(t, report.interrupted_by) : "completed", t});
   return report;
 }
 

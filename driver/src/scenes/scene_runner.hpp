@@ -22,9 +22,11 @@ struct FixedStepScene {
   std::function<void(double t, std::span<double> row)> row;  // values of `written` at t
 };
 
-// Runs t = 0, dt, …, t_max (deck or --tmax; dt must divide it), writing every
-// output.decimation-th row to the files the request and deck name. An exception during the run
-// closes the files as "failed: …" (keeping every row so far) and propagates.
+// Runs t = 0, dt, …, t_max (deck or --tmax; dt must divide it, checked before any file is opened),
+// writing every output.decimation-th row to the files the request and deck name. An exception
+// during the run closes the files as "failed: …" (keeping every row so far) and propagates. A
+// SIGINT/SIGTERM (run/interrupt.hpp) stops the loop at the end of the current step: the files are
+// closed as "interrupted at t = …" and the report's interrupted_by names the signal.
 RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& deck, FixedStepScene scene,
                           const ProgressCallback& progress);
 
