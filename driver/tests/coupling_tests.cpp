@@ -93,3 +93,24 @@ TEST_CASE("a copied scheduler reproduces the trajectory bit for bit", "[unit][co
   CHECK(a.slow_state().position_m == b.slow_state().position_m);
   CHECK(a.fast_state().velocity_m_s == b.fast_state().velocity_m_s);
 }
+
+TEST_CASE("an inverted mass ratio makes the explicit exchange unstable whatever n", "[verification][coupling]") {
+  // The added-mass condition of partitioned coupling (DESIGN.md §4): the slow side receives the
+  // fast side's spring load for motion it has already taken. With the fast mass 7× the slow one
+  // (the blades' rotational inertia against hub + generator) the slow step goes unstable far below
+  // the fast integrator's own limit, and more sub-steps do not help: this is why the rotor spin
+  // is solved together with the blades (turbine_blades.hpp). The fast spring keeps ω ≈ 20 rad/s.
+  ToyProblem p = study_problem();
+  p.fast.mass_kg = 7.0 * p.slow.mass_kg;
+  p.fast.stiffness_N_m = 400.0 * p.fast.mass_kg;
+  p.fast.damping_N_s_m = 2.0 * 0.01 * std::sqrt(p.fast.stiffness_N_m * p.fast.mass_kg);
+  for (const int n : {4, 16}) {
+    for (const CouplingMode mode : {CouplingMode::multi_rate, CouplingMode::predictor_corrector}) {
+      const StabilityResult r = measure_stability(p, mode, n, 1e-4, 5.0, 100.0);
+      INFO(to_string(mode) << " n=" << n << ": largest stable " << r.largest_stable_dt_s << " s");
+      // Measured 1.13 ms for both modes at n = 4 and 16 (the fast RK4 alone would allow n × 141 ms):
+      // bound 5 ms, and not growing with n.
+      CHECK(r.largest_stable_dt_s < 5e-3);
+    }
+  }
+}

@@ -267,6 +267,10 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
     }
   }();
   if (controller) controller->finish(report.simulated_s);
+  if (rotor && rotor->wind().outside_queries() > 0)
+    report.warnings.push_back(fmt::format("{} wind queries fell outside the turbulence grid (deflected tips or a displaced "
+                                          "rotor beyond its edge) and took the mean wind profile there",
+                                          rotor->wind().outside_queries()));
   report.coupling = blades ? "rigid multibody with sea loads at every RK4 stage; " + blades->description() +
                                  "; controller at the large step"
                            : "rigid multibody; sea and rotor loads at every RK4 stage; controller at the large step";

@@ -93,6 +93,14 @@ void validate(const FullField& f) {
     bad_field("tower", "tower array size differs from nt*n_tower*3");
 }
 
+bool covers(const FullField& f, const Vec3& p) {
+  const double y = p.y() + f.half_width_m();
+  const double z = p.z() - f.z_bottom_m;
+  constexpr double slack = 1e-9;
+  if (y < -slack || y > 2.0 * f.half_width_m() + slack || z > (f.nz - 1) * f.dz_m + slack) return false;
+  return z >= -slack || (f.n_tower > 0 && p.z() > 0.0);
+}
+
 Vec3 full_field_velocity(const FullField& f, const Vec3& p, double time_s) {
   const TimeBracket tb = bracket_time(f, time_s + (f.initial_x_m() - p.x()) / f.u_hub_m_s, time_s);
   const double y = p.y() + f.half_width_m();

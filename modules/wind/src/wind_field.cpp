@@ -1,5 +1,6 @@
 #include "fowtsim/wind/wind_field.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -62,8 +63,12 @@ WindField::WindField(WindParams params, std::shared_ptr<const FullField> field)
 Vec3 WindField::velocity(const Vec3& p, double time_s) const {
   const Vec3 p_wind = wind_to_inertial_.transpose() * (p - reference_point_m_) + reference_point_m_;
   Vec3 v_wind;
-  if (field_) {
+  if (field_ && covers(*field_, p_wind)) {
     v_wind = full_field_velocity(*field_, p_wind, time_s);
+  } else if (field_) {
+    ++outside_queries_;
+    const double z = std::max(p_wind.z(), 0.0);
+    v_wind = Vec3(field_->u_hub_m_s * std::pow(z / field_->z_hub_m, params_.shear_exponent), 0.0, 0.0);
   } else {
     v_wind = Vec3(profile_speed(params_, p_wind.z()), 0.0, 0.0);
   }

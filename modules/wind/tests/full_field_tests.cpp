@@ -106,3 +106,25 @@ TEST_CASE("inconsistent full fields are rejected", "[unit][wind]") {
   CHECK_THROWS_AS(WindField(p, std::make_shared<const FullField>(f)), InputError);
   CHECK_THROWS_AS(WindField(p), InputError);  // no field given
 }
+
+// Intent (issue 12 item 3): a deflected tip or a displaced platform beyond the grid's edge is not
+// a stop: the wind field answers with the mean profile u_hub (z/z_hub)^α there and counts it.
+TEST_CASE("a wind field answers points beyond the grid with the mean profile", "[unit][wind]") {
+  WindParams params;
+  params.model = WindModel::bts;
+  params.file = "synthetic.bts";
+  params.shear_exponent = 0.2;
+  params.reference_height_m = 92.0;
+  const WindField field(params, std::make_shared<const FullField>(linear_field(false)));
+  CHECK(field.outside_queries() == 0);
+  CHECK((field.velocity(Vec3(0, 13.3, 97.1), 0.37) - full_field_velocity(linear_field(false), Vec3(0, 13.3, 97.1), 0.37))
+            .norm() < 1e-12);
+  CHECK(field.outside_queries() == 0);
+  for (const Vec3& p : {Vec3(0, 20.5, 90), Vec3(0, -25, 60), Vec3(0, 0, 110)}) {
+    const Vec3 v = field.velocity(p, 0.37);
+    CHECK(v.x() == Approx(10.0 * std::pow(p.z() / 92.0, 0.2)).epsilon(1e-14));
+    CHECK(v.y() == 0.0);
+    CHECK(v.z() == 0.0);
+  }
+  CHECK(field.outside_queries() == 3);
+}

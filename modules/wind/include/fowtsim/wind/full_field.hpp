@@ -46,4 +46,8 @@ void validate(const FullField& field);
 // non-periodic field: InflowWind stops there too ("FF wind array boundaries violated").
 Vec3 full_field_velocity(const FullField& field, const Vec3& p_wind_m, double time_s);
 
+// True if full_field_velocity has data at p (wind-box coordinates): inside the grid's width and
+// height, or below it down to z = 0 when the field has tower points.
+bool covers(const FullField& field, const Vec3& p_wind_m);
+
 }  // namespace fowtsim::wind

@@ -31,19 +31,24 @@ class WindField {
   // io::read_turbsim_bts or generate_turbulence) and is shared read-only. Validates both.
   explicit WindField(WindParams params, std::shared_ptr<const FullField> field = nullptr);
 
-  // Velocity [m/s, inertial] at inertial point p [m] and time t [s]. No heap allocation.
+  // Velocity [m/s, inertial] at inertial point p [m] and time t [s]. No heap allocation. A point a
+  // full field does not cover (a deflected tip or a displaced platform beyond the grid's edge)
+  // gets the mean profile, u_hub (z/z_hub)^α with the deck's shear exponent, and is counted.
   Vec3 velocity(const Vec3& p_m, double time_s) const;
   // Same for many points; out.size() must equal points.size().
   void velocities(std::span<const Vec3> points_m, double time_s, std::span<Vec3> out_m_s) const;
 
   const WindParams& params() const { return params_; }
   const FullField* full_field() const { return field_.get(); }
+  // Queries that fell outside the full field so far (for a warning in the run summary).
+  long outside_queries() const { return outside_queries_; }
 
  private:
   WindParams params_;
   std::shared_ptr<const FullField> field_;
   Mat3 wind_to_inertial_;  // R above
   Vec3 reference_point_m_; // (0, 0, z_ref): pivot of the box rotation
+  mutable long outside_queries_ = 0;  // a diagnostic count: the velocity itself stays a pure function
 };
 
 // The module contract of DESIGN.md §2 for the channel outputs: the inflow has no state of its own
