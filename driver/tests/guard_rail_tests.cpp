@@ -448,7 +448,7 @@ TEST_CASE("tools/run applies options without a deck to the default deck", "[unit
     while (!text.empty() && text.back() == '\n') text.pop_back();
     return text;
   };
-  const std::string default_deck = (dir / "inputs/oc3_hywind/turbine_ntm_12mps_irregular.yaml").string();
+  const std::string default_deck = (dir / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml").string();
   CHECK(args_of("--tmax 60") == "run " + default_deck + " --tmax 60");
   CHECK(args_of("") == "run " + default_deck);
   CHECK(args_of("my.yaml --tmax 60") == "run my.yaml --tmax 60");
