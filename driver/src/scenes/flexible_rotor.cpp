@@ -116,7 +116,7 @@ BladeFrame FlexibleRotor::frame(const ShaftMotion& shaft, int blade) const {
 // Aerodynamic loads on the blades as they are now (explicit over the small step: the aero
 // loads depend on the deflection and its rate, not on the acceleration, so lagging them one
 // small step is not an added-mass exchange).
-void FlexibleRotor::evaluate_aero(double t, const ShaftMotion& shaft) {
+void FlexibleRotor::evaluate_aero(double t, const ShaftMotion& shaft, bool solve_induction) {
   if (!aero_) return;
   std::array<BladeFrame, kBlades> frames;
   for (int b = 0; b < kBlades; ++b) {
@@ -125,7 +125,8 @@ void FlexibleRotor::evaluate_aero(double t, const ShaftMotion& shaft) {
   }
   const Mat3 t_gh = shaft.orientation * rotation_matrix(Vec3(state_.spin.rotor_azimuth_rad, 0.0, 0.0));
   aero_->evaluate_placed(t, shaft.apex_position_m, t_gh, state_.spin.rotor_speed_rad_s, state_.pitch_rad,
-                         shaft.tower_base_m, shaft.tower_axis);
+                         shaft.tower_base_m, shaft.tower_axis,
+                         solve_induction ? aero::Induction::solve : aero::Induction::held);
   for (int b = 0; b < kBlades; ++b) map_->distribute(b, frames[b], state_.blades[b], aero_->output(), aero_loads_[b]);
 }
 
@@ -206,7 +207,7 @@ FlexibleRotor::HubLoad FlexibleRotor::root_loads(const ShaftMotion& shaft) const
 //                  N²J_g θ̈* + N J_g e·α_s = T_shaft − N T_gen,
 //                  T_shaft = k (ψ − θ)_{1−αf} + c (ψ̇ − θ̇)_{1−αf}
 // are linear in s: one or two scalar unknowns.
-void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const RotorDemands& demands) {
+void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const RotorDemands& demands, bool solve_induction) {
   const double rho = params_.dynamics.spectral_radius;
   const double am = (2.0 * rho - 1.0) / (rho + 1.0), af = rho / (rho + 1.0);
   const double gamma = 0.5 - am + af, beta = 0.25 * (1.0 - am + af) * (1.0 - am + af);
@@ -214,7 +215,7 @@ void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const Ro
   const bool held = params_.spin == SpinMode::held;
   const bool flexible = params_.torsional_flexibility && !held;
 
-  evaluate_aero(t, shaft_);  // on the blades at the start of the step
+  evaluate_aero(t, shaft_, solve_induction);  // on the blades at the start of the step
   advance_pitch(dt, demands.pitch_command_rad);
 
   // The spin predicted at the balance time with s = 0.
@@ -317,7 +318,7 @@ FlexibleRotor::HubLoad FlexibleRotor::advance(double t, double dt_large, int sub
   HubLoad sum{0.5 * last_.force_h_N, 0.5 * last_.moment_h_N_m};
   for (int i = 0; i < substeps; ++i) {
     const ShaftMotion at_balance = interpolate(begin, end, (i + balance) / substeps);
-    step(t + i * dt, dt, at_balance, demands);
+    step(t + i * dt, dt, at_balance, demands, i == 0 || params_.induction_every_small_step);
     shaft_ = interpolate(begin, end, static_cast<double>(i + 1) / substeps);
     last_ = root_loads(shaft_);
     const double w = i + 1 < substeps ? 1.0 : 0.5;

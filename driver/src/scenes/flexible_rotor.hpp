@@ -80,6 +80,9 @@ struct FlexibleRotorParams {
   // the pitch (and the blades' frame) every large step.
   double pitch_natural_frequency_rad_s = 2.0 * 3.141592653589793 * 2.0;
   double pitch_damping_ratio = 0.7;
+  // BEM inductions solved at every small step, or at the first small step of each large step
+  // and held over the others (aero::Induction::held: loads still follow the blade motion).
+  bool induction_every_small_step = false;
 };
 
 // Spin of rotor (ψ) and generator (θ_g, LSS-equivalent) as generalized-α variables: the
@@ -144,9 +147,9 @@ class FlexibleRotor {
   beam::BeamOutputs blade_outputs(int blade) const { return beam::beam_outputs(params_.blade, state_.blades[blade]); }
 
  private:
-  void evaluate_aero(double t, const ShaftMotion& shaft);
+  void evaluate_aero(double t, const ShaftMotion& shaft, bool solve_induction = true);
   void fill_inputs(const ShaftMotion& shaft, const RotorDemands& demands);
-  void step(double t, double dt, const ShaftMotion& shaft, const RotorDemands& demands);
+  void step(double t, double dt, const ShaftMotion& shaft, const RotorDemands& demands, bool solve_induction);
   void advance_pitch(double dt, double command);
   HubLoad root_loads(const ShaftMotion& shaft) const;
 

@@ -67,7 +67,8 @@ void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, doub
 }
 
 void RotorAero::evaluate_placed(double t, const Vec3& apex_m, const Mat3& t_gh, double rotor_speed_rad_s,
-                                std::span<const double> pitch_rad, const Vec3& tower_base_m, const Vec3& tower_axis) {
+                                std::span<const double> pitch_rad, const Vec3& tower_base_m, const Vec3& tower_axis,
+                                aero::Induction induction) {
   input_.hub_position_m = apex_m;
   input_.hub_orientation = t_gh;
   input_.rotor_speed_rad_s = rotor_speed_rad_s;
@@ -78,7 +79,7 @@ void RotorAero::evaluate_placed(double t, const Vec3& apex_m, const Mat3& t_gh, 
   for (std::size_t k = 0; k < points_.size(); ++k) points_[k] = input_.node_position_m.col(static_cast<Eigen::Index>(k));
   wind_->velocities(points_, t, inflow_);
   for (std::size_t k = 0; k < points_.size(); ++k) input_.inflow_velocity_m_s.col(static_cast<Eigen::Index>(k)) = inflow_[k];
-  aero::evaluate(params_, input_, {}, output_);
+  aero::evaluate(params_, input_, {}, output_, induction);
   force_ = t_gh * output_.rotor.force_hub_N;
   moment_ = t_gh * output_.rotor.moment_hub_N_m;
 }

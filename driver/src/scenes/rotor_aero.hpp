@@ -33,7 +33,8 @@ class RotorAero {
   // per node into output() and the rotor resultant about the apex.
   aero::Aero::Input& placed_input() { return input_; }
   void evaluate_placed(double t, const Vec3& apex_m, const Mat3& t_gh, double rotor_speed_rad_s,
-                       std::span<const double> pitch_rad, const Vec3& tower_base_m, const Vec3& tower_axis);
+                       std::span<const double> pitch_rad, const Vec3& tower_base_m, const Vec3& tower_axis,
+                       aero::Induction induction);
   const aero::Aero::Output& output() const { return output_; }
   // The wind field (for the rotor-plane probe and checks that the rotor stays inside the grid).
   const wind::WindField& wind() const { return *wind_; }

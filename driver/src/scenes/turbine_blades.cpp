@@ -33,6 +33,9 @@ Schema blades_schema() {
                                     .doc("n = ΔT/Δt: blade steps per large step (single_rate needs 1)")});
   fields.push_back({"stiffness_scale", Schema::number().greater_than(0.0).default_value(1.0)
                                            .doc("factor on every sectional stiffness (1000: the stiff-blade check)")});
+  fields.push_back({"induction", Schema::choice({"large_step", "small_step"}).default_value("large_step")
+                                     .doc("BEM inductions solved once per large step and held over its small steps "
+                                          "(loads follow the blade motion at every small step), or solved at every small step")});
   fields.push_back({"pitch_actuator_frequency_hz", Schema::number().greater_than(0.0).default_value(2.0)
                                                        .doc("natural frequency of the second-order pitch actuator")});
   fields.push_back({"pitch_actuator_damping_ratio", Schema::number().greater_than(0.0).default_value(0.7)
@@ -70,6 +73,7 @@ FlexibleRotorParams rotor_params(const io::ValidatedDeck& deck, const multibody:
   p.gravity_m_s2 = s.gravity_m_s2;
   p.pitch_natural_frequency_rad_s = 2.0 * std::numbers::pi * b.number("pitch_actuator_frequency_hz");
   p.pitch_damping_ratio = b.number("pitch_actuator_damping_ratio");
+  p.induction_every_small_step = b.string("induction") == "small_step";
   if (model.blade_count != kBlades)
     throw InputError({"floating", std::nullopt, "structure.rotor.blade_count", "3"},
                      where(deck, "structure.rotor.blade_count") + ": flexible blades need a three-bladed rotor");

@@ -102,7 +102,7 @@ Aero::Output Aero::outputs(const Params& params, const Input& input, const State
   return out;
 }
 
-void evaluate(const Params& params, const Aero::Input& in, const Aero::State&, Aero::Output& out) {
+void evaluate(const Params& params, const Aero::Input& in, const Aero::State&, Aero::Output& out, Induction induction) {
   check_input(params, in);
   const int nb = params.number_of_blades, nn = nodes_per_blade(params), n = nb * nn;
   require_size(out.force_N_m.cols() == n && static_cast<int>(out.nodes.size()) == n, "output (make_output)",
@@ -126,6 +126,22 @@ void evaluate(const Params& params, const Aero::Input& in, const Aero::State&, A
   const Vec3 downwind = redistribute ? Vec3(in_plane.normalized()) : Vec3::Zero();
 
   out.unconverged_nodes = 0;
+  // Loads per unit span of node i from its section solution.
+  auto store = [&](int i, const Mat3& t_gb, const SectionInflow& s, const SectionSolution& sol) {
+    const BladeNodeParams& node = params.blade[i % nn];
+    if (sol.status == InductionStatus::no_root) ++out.unconverged_nodes;
+    const double q = 0.5 * params.air_density_kg_m3 * sol.relative_speed_m_s * sol.relative_speed_m_s;
+    NodeResult& r = out.nodes[i];
+    r.section = sol;
+    r.local_radius_m = s.local_radius_m;
+    r.axial_velocity_m_s = s.axial_velocity_m_s;
+    r.tangential_velocity_m_s = s.tangential_velocity_m_s;
+    r.normal_force_N_m = q * node.chord_m * sol.cn;
+    r.tangential_force_N_m = q * node.chord_m * sol.ct;
+    out.force_N_m.col(i) = t_gb * Vec3(r.normal_force_N_m, -r.tangential_force_N_m, 0.0);
+    const double cm = params.pitching_moment ? sol.coefficients.cm : 0.0;
+    out.moment_N_m_m.col(i) = t_gb.col(2) * (q * node.chord_m * node.chord_m * cm);
+  };
   for (int blade = 0; blade < nb; ++blade) {
     const int first = blade * nn;
     auto radial = [&](int i) {
@@ -153,7 +169,16 @@ void evaluate(const Params& params, const Aero::Input& in, const Aero::State&, A
       s.chord_m = node.chord_m;
       s.theta_rad = theta;
       s.number_of_blades = nb;
-      SectionSolution sol = solve_section(s, polar, params);
+      const SectionSolution& previous = out.nodes[i].section;
+      if (induction == Induction::held && previous.status == InductionStatus::converged) {
+        // The last solve's inductions (skew redistribution included) with today's relative velocity.
+        const SectionSolution sol = section_with_induction(s, polar, previous.axial_induction,
+                                                           previous.tangential_induction, previous);
+        store(i, t_gb, s, sol);
+        continue;
+      }
+      // Warm start from this node's root of the previous evaluation on the same Output.
+      SectionSolution sol = solve_section(s, polar, params, previous.root_phi_c_rad);
       if (redistribute && sol.status == InductionStatus::converged) {
         // Glauert/Pitt–Peters: a_skew = a [1 + K (r/R) tan(χ/2) cos ψ], ψ measured from the
         // downwind side of the disk (where the in-plane inflow points), wake skew χ = (0.6 a + 1) χ0
@@ -163,18 +188,7 @@ void evaluate(const Params& params, const Aero::Input& in, const Aero::State&, A
         const double factor = 1.0 + params.skew_factor * (s.local_radius_m / radius) * std::tan(0.5 * chi) * cos_psi;
         sol = section_with_induction(s, polar, sol.axial_induction * factor, sol.tangential_induction, sol);
       }
-      if (sol.status == InductionStatus::no_root) ++out.unconverged_nodes;
-      const double q = 0.5 * params.air_density_kg_m3 * sol.relative_speed_m_s * sol.relative_speed_m_s;
-      NodeResult& r = out.nodes[i];
-      r.section = sol;
-      r.local_radius_m = s.local_radius_m;
-      r.axial_velocity_m_s = s.axial_velocity_m_s;
-      r.tangential_velocity_m_s = s.tangential_velocity_m_s;
-      r.normal_force_N_m = q * node.chord_m * sol.cn;
-      r.tangential_force_N_m = q * node.chord_m * sol.ct;
-      out.force_N_m.col(i) = t_gb * Vec3(r.normal_force_N_m, -r.tangential_force_N_m, 0.0);
-      const double cm = params.pitching_moment ? sol.coefficients.cm : 0.0;
-      out.moment_N_m_m.col(i) = t_gb.col(2) * (q * node.chord_m * node.chord_m * cm);
+      store(i, t_gb, s, sol);
     }
   }
 

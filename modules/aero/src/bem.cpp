@@ -136,7 +136,18 @@ bool opposite(double fa, double fb) { return (fa <= 0.0 && fb >= 0.0) || (fa >= 
 
 // Finds a root of R(φ_c): Ning's three brackets in order, then a scan of both half circles
 // (the poles at φ_c = 0, ±π are never inside a bracket). Returns false when there is none.
-bool find_root(const Residual& f, double& phi_c) {
+bool find_root(const Residual& f, double& phi_c, double warm_start) {
+  constexpr double kWarmHalfWidth = 0.01;  // [rad]: a few times the change of φ over one small step
+  const double a = warm_start - kWarmHalfWidth, b = warm_start + kWarmHalfWidth;
+  // Only inside one half circle, clear of the poles at 0 and ±π that no bracket may contain.
+  if (std::isfinite(warm_start) && (a > kBracketOffset || b < -kBracketOffset) && std::abs(a) < kPi - kBracketOffset &&
+      std::abs(b) < kPi - kBracketOffset) {
+    const double fa = f(a).residual, fb = f(b).residual;
+    if (opposite(fa, fb)) {
+      phi_c = brent_root(f, a, b, fa, fb);
+      return true;
+    }
+  }
   const double pairs[3][2] = {{kBracketOffset, 0.5 * kPi},
                               {-0.25 * kPi, -kBracketOffset},
                               {0.5 * kPi, kPi - kBracketOffset}};
@@ -223,7 +234,7 @@ SectionSolution section_with_induction(const SectionInflow& in, const Polar& pol
   return s;
 }
 
-SectionSolution solve_section(const SectionInflow& in, const Polar& polar, const Params& params) {
+SectionSolution solve_section(const SectionInflow& in, const Polar& polar, const Params& params, double warm_start) {
   const double vx = in.axial_velocity_m_s, vy = in.tangential_velocity_m_s;
   if (!std::isfinite(vx) || !std::isfinite(vy) || !std::isfinite(in.theta_rad) ||
       !std::isfinite(in.local_radius_m)) {
@@ -260,12 +271,13 @@ SectionSolution solve_section(const SectionInflow& in, const Polar& polar, const
   }
   const Residual f(in, polar, params);
   double phi_c = 0.0;
-  if (!find_root(f, phi_c)) {
+  if (!find_root(f, phi_c, warm_start)) {
     base.status = InductionStatus::no_root;
     base.residual_evaluations = f.evaluations;
     return section_with_induction(in, polar, 0.0, 0.0, base);
   }
   const Residual::Value v = f(phi_c);
+  base.root_phi_c_rad = phi_c;
   base.loss_factor = v.loss;
   base.residual_evaluations = f.evaluations;
   // a and a' consistent with tan φ = V_x(1−a)/(V_y(1+a')) at the root: take the better-conditioned

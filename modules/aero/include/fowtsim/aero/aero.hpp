@@ -74,7 +74,7 @@ struct Aero {
     Points force_N_m;                // (3 × B·N) aerodynamic force per unit span at the node, g [N/m]
     Points moment_N_m_m;             // (3 × B·N) pitching moment per unit span about the node, g [N·m/m]
     Points disturbed_inflow_m_s;     // (3 × B·N) inflow with tower influence, g [m/s]
-    std::vector<NodeResult> nodes;   // (B·N) section results
+    std::vector<NodeResult> nodes;   // (B·N) section results; their roots warm-start the next evaluate() on this Output
     RotorResult rotor;
     int unconverged_nodes = 0;       // nodes with InductionStatus::no_root (zero induction used)
   };
@@ -90,10 +90,18 @@ struct Aero {
 Aero::Input make_input(const Params& params);
 Aero::Output make_output(const Params& params);
 
+// How evaluate() finds the inductions: solve the BEM equations at every node, or hold the
+// inductions (a, a') the last solve on this Output found and only recompute the loads with the
+// current relative velocity — a frozen wake over a short interval (the coupled turbine's small
+// steps inside one large step: the induced flow changes on the scale of seconds, the blade
+// velocities that aeroelastic damping needs are taken at every call). Nodes without a converged
+// previous solve are solved.
+enum class Induction { solve, held };
+
 // The loads and rotor quantities for the input, into an Output from make_output(). Allocates
 // nothing. Throws InputError on a mis-sized input and NumericalError on non-finite data.
 void evaluate(const Params& params, const Aero::Input& input, const Aero::State& state,
-              Aero::Output& output);
+              Aero::Output& output, Induction induction = Induction::solve);
 
 // Values of channels(params) in the same order; values.size() must equal channels(params).size().
 void channel_values(const Params& params, const Aero::Input& input, const Aero::Output& output,

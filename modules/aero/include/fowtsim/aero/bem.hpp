@@ -1,4 +1,5 @@
 #pragma once
+#include <limits>
 // Steady blade-element momentum induction at one blade section, solved as one equation in the
 // inflow angle φ with guaranteed bracketing (Ning 2014, "A simple solution method for the blade
 // element momentum equations with guaranteed convergence", Wind Energy 17:1327–1345).
@@ -56,12 +57,19 @@ struct SectionSolution {
   double cn = 0.0;                   // normal-force coefficient (along x_b, with drag) [-]
   double ct = 0.0;                   // tangential-force coefficient (along −y_b, with drag) [-]
   int residual_evaluations = 0;      // calls of R(φ) (cost diagnostic)
+  double root_phi_c_rad = std::numeric_limits<double>::quiet_NaN();  // the root of R found (NaN: none);
+                                     // the warm start of the next solve at this node
   InductionStatus status = InductionStatus::converged;
 };
 
 // Solves the induction of one section. Allocates nothing; never returns non-finite numbers for
-// finite input (throws NumericalError otherwise).
-SectionSolution solve_section(const SectionInflow& inflow, const Polar& polar, const Params& params);
+// finite input (throws NumericalError otherwise). A finite `warm_start` (a previous
+// root_phi_c_rad at this node) is tried first as a narrow bracket ±0.02 rad around it: when R
+// changes sign there, the root in it is taken (the solution continues the branch it was on, as a
+// time-marching solver's would), otherwise the cold search of Ning's brackets runs. Both converge
+// to 1e-12 rad.
+SectionSolution solve_section(const SectionInflow& inflow, const Polar& polar, const Params& params,
+                              double warm_start = std::numeric_limits<double>::quiet_NaN());
 
 // The section quantities for given inductions (a, a'): φ, α, W, coefficients; the status and loss
 // factor of `base` are kept. Used after the skewed-wake redistribution changes a.
