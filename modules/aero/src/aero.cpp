@@ -169,12 +169,19 @@ void evaluate(const Params& params, const Aero::Input& in, const Aero::State&, A
       s.chord_m = node.chord_m;
       s.theta_rad = theta;
       s.number_of_blades = nb;
-      const SectionSolution& previous = out.nodes[i].section;
-      if (induction == Induction::held && previous.status == InductionStatus::converged) {
-        // The last solve's inductions (skew redistribution included) with today's relative velocity.
-        const SectionSolution sol = section_with_induction(s, polar, previous.axial_induction,
-                                                           previous.tangential_induction, previous);
-        store(i, t_gb, s, sol);
+      const NodeResult& last = out.nodes[i];
+      const SectionSolution& previous = last.section;
+      if (induction == Induction::held && previous.status == InductionStatus::converged &&
+          std::abs(s.axial_velocity_m_s) > 1e-6 && std::abs(s.tangential_velocity_m_s) > 1e-6) {
+        // A frozen wake: the induced velocities a V_x and a' V_y of the last solve (skew
+        // redistribution included) are held and the section's own motion enters the relative
+        // velocity in full. Holding the factors a, a' instead would scale the blade's velocity by
+        // (1 − a) and flip its aerodynamic damping wherever a > 1 (measured: a blade released from
+        // its centrifugal shape into 12 m/s flutters within 0.3 s). The products stay those of the
+        // last solve through any number of held calls.
+        const double a = previous.axial_induction * last.axial_velocity_m_s / s.axial_velocity_m_s;
+        const double ap = previous.tangential_induction * last.tangential_velocity_m_s / s.tangential_velocity_m_s;
+        store(i, t_gb, s, section_with_induction(s, polar, a, ap, previous));
         continue;
       }
       // Warm start from this node's root of the previous evaluation on the same Output.

@@ -90,12 +90,12 @@ struct Aero {
 Aero::Input make_input(const Params& params);
 Aero::Output make_output(const Params& params);
 
-// How evaluate() finds the inductions: solve the BEM equations at every node, or hold the
-// inductions (a, a') the last solve on this Output found and only recompute the loads with the
-// current relative velocity — a frozen wake over a short interval (the coupled turbine's small
+// How evaluate() finds the inductions: solve the BEM equations at every node, or hold the induced
+// velocities (a V_x, a' V_y) the last solve on this Output found and only recompute the loads with
+// the current relative velocity — a frozen wake over a short interval (the coupled turbine's small
 // steps inside one large step: the induced flow changes on the scale of seconds, the blade
-// velocities that aeroelastic damping needs are taken at every call). Nodes without a converged
-// previous solve are solved.
+// velocities that aeroelastic damping needs are taken in full at every call). Nodes without a
+// converged previous solve are solved.
 enum class Induction { solve, held };
 
 // The loads and rotor quantities for the input, into an Output from make_output(). Allocates
