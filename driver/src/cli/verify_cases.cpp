@@ -21,6 +21,7 @@ std::vector<VerificationRow> verify_beam_frequencies(std::FILE* out);
 void bench_beam(std::FILE* out);
 void bench_aero(std::FILE* out);       // bench_turbine.cpp
 void bench_multibody(std::FILE* out);
+void bench_turbine(std::FILE* out);    // bench_flexible_turbine.cpp
 std::vector<VerificationRow> verify_sea(std::FILE* out);  // verify_sea.cpp
 void bench_hydro(std::FILE* out);
 void bench_waves(std::FILE* out);
@@ -90,7 +91,7 @@ std::filesystem::path default_shared_dir() {
   return (root.parent_path() / "shared").lexically_normal();
 }
 
-std::vector<std::string> benchmark_case_names() { return {"coupling", "beam", "hydro", "waves", "aero", "multibody"}; }
+std::vector<std::string> benchmark_case_names() { return {"coupling", "beam", "hydro", "waves", "aero", "multibody", "turbine"}; }
 
 // A shipped input deck: inputs/<relative> under the working directory when run from the source
 // tree, else the source tree this binary was built from.
@@ -108,8 +109,9 @@ void run_benchmark_case(const std::string& name, std::FILE* out) {
   if (name == "waves") return bench_waves(out);
   if (name == "aero") return bench_aero(out);
   if (name == "multibody") return bench_multibody(out);
+  if (name == "turbine") return bench_turbine(out);
   if (name != "coupling") {
-    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody"}, fmt::format("unknown benchmark case '{}'", name));
+    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody, turbine"}, fmt::format("unknown benchmark case '{}'", name));
   }
   const ToyProblem problem = study_problem();
   constexpr double kTmax = 200.0;
