@@ -104,6 +104,13 @@ TEST_CASE("seed 4.5.3 validation test: OC3 with flexible blades against OpenFAST
   // 23 finite volumes and one 5th-order element (README, "Flexible blades"). Bound: 50 % and 0.8.
   CHECK(std::abs(stdev(my.ours) / stdev(my.ref) - 1.0) < 0.5);
   CHECK(correlation(my) > 0.8);
+  // The mid-span gauge (gauges_eta: [0.5]) carries the outer half's load: a flap moment of the same
+  // sign and below the root's (measured mean 15 % of it), an axial force below the root's (49 %).
+  const auto column = [&](const char* name) { return ours.columns[ours.find(name).value()]; };
+  const double gauge_my = mean(column("Spn1MLyb1")), root_my = mean(column("RootMyb1"));
+  CHECK(gauge_my > 0.0);
+  CHECK(gauge_my < root_my);
+  CHECK(mean(column("Spn1FLzb1")) < mean(column("RootFzb1")));
 }
 
 TEST_CASE("blades 1000x stiffer reproduce the rigid-blade turbine", "[verification][flexible]") {

@@ -33,6 +33,8 @@ Schema blades_schema() {
                                     .doc("n = ΔT/Δt: blade steps per large step (single_rate needs 1)")});
   fields.push_back({"stiffness_scale", Schema::number().greater_than(0.0).default_value(1.0)
                                            .doc("factor on every sectional stiffness (1000: the stiff-blade check)")});
+  fields.push_back({"gauges_eta", Schema::sequence(Schema::number().at_least(0.0).at_most(1.0)).max_items(9).optional()
+                                      .doc("span gauges: arclength fractions for Spn<k>FL/ML{x,y,z}b<b> (internal loads, blade frame)")});
   fields.push_back({"induction", Schema::choice({"large_step", "small_step"}).default_value("large_step")
                                      .doc("BEM inductions solved once per large step and held over its small steps "
                                           "(loads follow the blade motion at every small step), or solved at every small step")});
@@ -101,6 +103,7 @@ TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Mod
   if (mode_ == CouplingMode::single_rate && substeps_ != 1)
     throw InputError({"floating", std::nullopt, "blades.substeps", "1 with single_rate"},
                      where(deck, "blades.substeps") + ": single_rate coupling takes one blade step per large step");
+  if (b.has("gauges_eta")) gauges_eta_ = b.numbers("gauges_eta");
   const std::string how = b.string("start");
   start_ = how == "static" ? FlexibleRotor::Start::static_loads
            : how == "centrifugal" ? FlexibleRotor::Start::centrifugal
@@ -211,6 +214,15 @@ std::vector<ChannelInfo> TurbineBlades::channels() const {
     for (int i = 0; i < 3; ++i)
       c.push_back({fmt::format("B{}TipTD{}r", b, axes[i]), "m", fmt::format("BeamDyn: blade {} tip deflection, root frame", b), "blades"});
     c.push_back({fmt::format("BldPitchAct{}", b), "deg", fmt::format("blade {} pitch after the actuator", b), "blades"});
+    for (std::size_t g = 0; g < gauges_eta_.size(); ++g) {
+      for (int i = 0; i < 3; ++i)
+        c.push_back({fmt::format("Spn{}FL{}b{}", g + 1, axes[i], b), "kN",
+                     fmt::format("blade {} internal force at eta {} along {}_b (outboard on inboard)", b, gauges_eta_[g], axes[i]),
+                     "blades"});
+      for (int i = 0; i < 3; ++i)
+        c.push_back({fmt::format("Spn{}ML{}b{}", g + 1, axes[i], b), "kN-m",
+                     fmt::format("blade {} internal moment at eta {} about {}_b", b, gauges_eta_[g], axes[i]), "blades"});
+    }
   }
   c.push_back({"RotThrust", "kN", "rotor thrust along the shaft: the blades' root loads on the hub", "blades"});
   c.push_back({"RotTorq", "kN-m", "low-speed shaft torque: blades' root torque less the hub's inertia", "blades"});
@@ -245,6 +257,10 @@ void TurbineBlades::channel_values(std::span<double> out) const {
     for (int i = 0; i < 3; ++i) out[k++] = root[3 + i];
     for (int i = 0; i < 3; ++i) out[k++] = o.tip_displacement_m[i];
     out[k++] = st.pitch_rad[b] * kDeg;
+    for (const double eta : gauges_eta_) {
+      const Vec6 load = beam::section_load_at(model, s, eta);
+      for (int i = 0; i < 6; ++i) out[k++] = load[i] / 1e3;
+    }
   }
   const FlexibleRotor::HubLoad hub = rotor_.hub_load();
   const ShaftMotion& sh = rotor_.shaft();

@@ -81,6 +81,7 @@ class TurbineBlades {
   CouplingMode mode_ = CouplingMode::multi_rate;
   int substeps_ = 4;
   FlexibleRotor::Start start_ = FlexibleRotor::Start::static_loads;
+  std::vector<double> gauges_eta_;  // span gauges (arclength fractions)
   FlexibleRotor::HubLoad held_, held_next_;
   SpinState spin_before_;                         // fast spin at the start of the last step
   SpinProfile profile_;

@@ -3,6 +3,8 @@
 // residual's frame-acceleration derivative it rests on, and the step's atomicity and copyability.
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include <catch2/catch.hpp>
 
 #include "fowtsim/beam/beam_outputs.hpp"
@@ -130,4 +132,17 @@ TEST_CASE("a copied beam state continues bit-identically, factor cache included"
     second.step(input_at(4.0 + (k + 1) * 0.01), 0.01, copy);
   }
   CHECK(max_abs_diff(original, copy) == 0.0);
+}
+
+TEST_CASE("a span gauge at the root is the root load, and strain energy is zero undeformed", "[unit][beam]") {
+  Bent b;
+  const Vec6 root = root_reaction(b.model, b.state);
+  // The root section: loads on the root, moment about the point α of the way to node 0, moved
+  // back to the root point — the same six numbers to rounding.
+  Vec6 gauge = section_load_at(b.model, b.state, 0.0);
+  const Vec3 arm = b.model.sections.front().alpha * (b.state.position_m[0] - b.model.root_position_m);
+  gauge.tail<3>() += arm.cross(Vec3(gauge.head<3>()));
+  CHECK((gauge - root).norm() <= 1e-9 * root.norm());
+  CHECK(strain_energy(b.model, make_state(b.model)) == 0.0);
+  CHECK(strain_energy(b.model, b.state) > 0.0);
 }

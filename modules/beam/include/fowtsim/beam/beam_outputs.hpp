@@ -16,4 +16,12 @@ struct BeamOutputs {
 
 BeamOutputs beam_outputs(const BeamModel& model, const BeamState& state);
 
+// A span gauge: the internal load at the section nearest to arclength fraction eta — force and
+// moment (about the section point) that the outboard part puts on the inboard part, strain-rate
+// damping included, in f. At the root it is the root load.
+Vec6 section_load_at(const BeamModel& model, const BeamState& state, double eta);
+
+// Elastic strain energy Σ_j ½ Δs_j [γ; κ]ᵀ C [γ; κ] of the sections [J].
+double strain_energy(const BeamModel& model, const BeamState& state);
+
 }  // namespace fowtsim::beam
