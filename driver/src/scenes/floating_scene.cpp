@@ -179,10 +179,10 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
   stage_loads.hold(0.0, initial_pitch);
   // The shaft motion (non-rotating) of a multibody state at time t, under the stage loads.
   multibody::Evaluation evaluation;
-  auto shaft_at = [&](double t) {
+  auto shaft_at = [&](double t, const multibody::State& s) {
     multibody::AppliedLoads loads;
-    stage_loads.loads(t, state, loads);
-    multibody::evaluate(model, state, loads, t, evaluation);
+    stage_loads.loads(t, s, loads);
+    multibody::evaluate(model, s, loads, t, evaluation);
     return shaft_motion(evaluation.kinematics, evaluation.acceleration);
   };
   auto demands = [&] {
@@ -191,7 +191,7 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
     d.pitch_command_rad = stage_loads.pitch_rad();
     return d;
   };
-  if (blades) blades->start(shaft_at(0.0), state, initial_pitch, demands());
+  if (blades) blades->start(shaft_at(0.0, state), state, initial_pitch, demands());
 
   std::vector<ChannelInfo> all = multibody::Multibody::channels(model);
   const std::size_t sea_first = all.size();
@@ -228,19 +228,7 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
       multibody::Multibody::advance(model, stage_loads, t, dt, state);
       return;
     }
-    // turbine_blades.hpp, steps 1–4.
-    const ShaftMotion begin = blades->shaft();
-    const multibody::State before = state;
-    blades->use_extrapolated_spin_profile(t);
-    multibody::Multibody::advance(model, stage_loads, t, dt, state);
-    blades->advance_fast(t, dt, begin, shaft_at(t + dt), demands());
-    blades->hold_new_average();
-    if (blades->mode() == CouplingMode::predictor_corrector) {
-      state = before;
-      blades->use_step_spin_profile(t);
-      multibody::Multibody::advance(model, stage_loads, t, dt, state);
-    }
-    blades->copy_spin(state);
+    blades->advance(stage_loads, shaft_at, demands(), t, dt, state);
   };
   scene.row = [&](double t, std::span<double> row) {
     multibody::AppliedLoads loads;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "decks/beam_deck.hpp"
+#include "fowtsim/multibody/multibody.hpp"
 #include "decks/deck_helpers.hpp"
 #include "fowtsim/core/rotation_vector.hpp"
 #include "scenes/rotor_aero.hpp"
@@ -142,14 +143,29 @@ void TurbineBlades::use_extrapolated_spin_profile(double t) {
                     s.generator_azimuth_rad, s.generator_speed_rad_s, mean_generator_acceleration_};
 }
 
-void TurbineBlades::advance_fast(double t, double dt_large, const ShaftMotion& begin, const ShaftMotion& end,
-                                 const RotorDemands& demands) {
-  const SpinState before = rotor_.state().spin;
-  held_next_ = rotor_.advance(t, dt_large, substeps_, begin, end, demands);
+void TurbineBlades::advance(multibody::LoadProvider& provider, const ShaftAt& shaft_at, const RotorDemands& demands,
+                            double t, double dt_large, multibody::State& state) {
+  const ShaftMotion begin = rotor_.shaft();
+  const multibody::State before = state;
+  // 1. The multibody with the held root loads and the spin extrapolated from the blades'.
+  use_extrapolated_spin_profile(t);
+  multibody::Multibody::advance(model_, provider, t, dt_large, state);
+  // 2. The blades and the spin through the interpolated shaft motion.
+  const SpinState spin_before = rotor_.state().spin;
+  const FlexibleRotor::HubLoad average = rotor_.advance(t, dt_large, substeps_, begin, shaft_at(t + dt_large, state), demands);
   const SpinState& after = rotor_.state().spin;
-  mean_rotor_acceleration_ = (after.rotor_speed_rad_s - before.rotor_speed_rad_s) / dt_large;
-  mean_generator_acceleration_ = (after.generator_speed_rad_s - before.generator_speed_rad_s) / dt_large;
-  spin_before_ = before;
+  mean_rotor_acceleration_ = (after.rotor_speed_rad_s - spin_before.rotor_speed_rad_s) / dt_large;
+  mean_generator_acceleration_ = (after.generator_speed_rad_s - spin_before.generator_speed_rad_s) / dt_large;
+  spin_before_ = spin_before;
+  held_ = average;
+  // 3. The corrector: the multibody step again with the new average and the spin the blades took.
+  if (mode_ == CouplingMode::predictor_corrector) {
+    state = before;
+    use_step_spin_profile(t);
+    multibody::Multibody::advance(model_, provider, t, dt_large, state);
+  }
+  // 4. The blades own the spin.
+  copy_spin(state);
 }
 
 void TurbineBlades::use_step_spin_profile(double t) {
@@ -159,8 +175,6 @@ void TurbineBlades::use_step_spin_profile(double t) {
                     spin_before_.generator_azimuth_rad, spin_before_.generator_speed_rad_s,
                     mean_generator_acceleration_};
 }
-
-void TurbineBlades::hold_new_average() { held_ = held_next_; }
 
 void TurbineBlades::copy_spin(multibody::State& state) const {
   const SpinState& s = rotor_.state().spin;

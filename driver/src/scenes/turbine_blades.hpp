@@ -14,6 +14,7 @@
 //     spin the fast side computed; single_rate: n = 1;
 //  4. the multibody's spin is set to the fast side's at T + ΔT.
 // Platform translation and tilt carry the light blades on a heavy body: staggered, as the seed.
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -52,24 +53,25 @@ class TurbineBlades {
   // The spin the multibody takes at time t (quadratic from the held profile).
   multibody::SpinMotion spin(double t) const;
 
-  // Step 2 of the header: the fast side over [t, t + ΔT]. The new average root load waits in
-  // hold_new_average(); the multibody keeps the old one until then.
-  void advance_fast(double t, double dt_large, const ShaftMotion& begin, const ShaftMotion& end,
-                    const RotorDemands& demands);
-  void hold_new_average();
-  // The spin the fast side took over the step starting at t (for the corrector pass).
-  void use_step_spin_profile(double t);
-  // Starts the next step's profile from the fast side's spin at t and its mean acceleration.
-  void use_extrapolated_spin_profile(double t);
-  // Writes the fast side's spin into the multibody state (step 4).
-  void copy_spin(multibody::State& state) const;
+  // One large step, steps 1–4 of the header. `provider` must apply add_stage_loads() and answer
+  // rotor_spin() with spin(); `shaft_at(t, state)` gives the shaft motion of a multibody state
+  // under the provider's loads.
+  using ShaftAt = std::function<ShaftMotion(double t, const multibody::State& state)>;
+  void advance(multibody::LoadProvider& provider, const ShaftAt& shaft_at, const RotorDemands& demands, double t,
+               double dt_large, multibody::State& state);
+
   const ShaftMotion& shaft() const { return rotor_.shaft(); }
+  const FlexibleRotor& rotor() const { return rotor_; }
 
   std::vector<ChannelInfo> channels() const;
   void channel_values(std::span<double> out) const;
   std::string description() const;
 
  private:
+  void use_step_spin_profile(double t);          // the spin the blades took over the step from t
+  void use_extrapolated_spin_profile(double t);  // from the blades' spin at t, last step's mean acceleration
+  void copy_spin(multibody::State& state) const;
+
   struct SpinProfile {
     double t0 = 0.0;
     multibody::SpinMotion at_t0;
@@ -82,7 +84,7 @@ class TurbineBlades {
   int substeps_ = 4;
   FlexibleRotor::Start start_ = FlexibleRotor::Start::static_loads;
   std::vector<double> gauges_eta_;  // span gauges (arclength fractions)
-  FlexibleRotor::HubLoad held_, held_next_;
+  FlexibleRotor::HubLoad held_;
   SpinState spin_before_;                         // fast spin at the start of the last step
   SpinProfile profile_;
   double mean_rotor_acceleration_ = 0.0, mean_generator_acceleration_ = 0.0;  // over the last large step
