@@ -44,6 +44,7 @@ VerificationRow row(std::string case_name, std::string metric, double value, dou
 }  // namespace
 
 void set_shared_dir(const std::filesystem::path& dir) { shared_root() = dir; }
+const std::filesystem::path& shared_dir() { return shared_root(); }
 
 std::vector<VerificationRow> verify_beam_rollup(std::FILE* out) {
   std::vector<VerificationRow> rows;

@@ -1,3 +1,4 @@
+#include "cli/verify_turbine.hpp"
 #include "cli/verify_cases.hpp"
 
 #include <algorithm>
@@ -27,7 +28,8 @@ void bench_hydro(std::FILE* out);
 void bench_waves(std::FILE* out);
 
 std::vector<std::string> verification_case_names() {
-  return {"coupling", "beam-rollup", "beam-curved", "beam-timestep", "beam-beamdyn", "beam-frequencies", "sea"};
+  return {"coupling",         "beam-rollup", "beam-curved",        "beam-timestep", "beam-beamdyn",
+          "beam-frequencies", "sea",         "turbine-validation", "turbine-oc3"};
 }
 
 std::vector<VerificationRow> run_verification_case(const std::string& name, std::FILE* out) {
@@ -38,6 +40,8 @@ std::vector<VerificationRow> run_verification_case(const std::string& name, std:
   if (name == "beam-beamdyn") return verify_beam_beamdyn(out);
   if (name == "beam-frequencies") return verify_beam_frequencies(out);
   if (name == "sea") return verify_sea(out);
+  if (name == "turbine-validation") return verify_turbine_validation(out);
+  if (name == "turbine-oc3") return verify_turbine_oc3(out);
   std::string known;
   for (const std::string& n : verification_case_names()) known += (known.empty() ? "" : ", ") + n;
   throw InputError({"verify", {}, name, "known cases: " + known}, fmt::format("unknown verification case '{}'", name));

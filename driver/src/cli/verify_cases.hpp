@@ -41,7 +41,8 @@ std::vector<VerificationRow> run_verification_case(const std::string& name, std:
 std::vector<std::string> benchmark_case_names();
 void run_benchmark_case(const std::string& name, std::FILE* out);
 
-// Where the reference data (../shared: reference/…) are read from by the beam cases.
+// Where the reference data (../shared: reference/…) are read from by the beam and turbine cases.
 void set_shared_dir(const std::filesystem::path& dir);
+const std::filesystem::path& shared_dir();
 
 }  // namespace fowtsim::driver

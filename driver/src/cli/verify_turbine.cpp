@@ -1,0 +1,150 @@
+#include "cli/verify_turbine.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "cli/verify_cases.hpp"
+#include "compare/window_statistics.hpp"
+#include "fowtsim/io/readers.hpp"
+#include "run/run_scene.hpp"
+
+namespace fowtsim::driver {
+
+std::filesystem::path source_input(const std::string& relative);  // verify_cases.cpp
+
+namespace {
+
+std::filesystem::path input(const std::string& relative) { return std::filesystem::absolute(source_input(relative)); }
+
+std::filesystem::path scratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "fowtsim-verify" / name;
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+io::ChannelTable run_deck(const std::filesystem::path& deck, const std::filesystem::path& base) {
+  RunRequest r;
+  r.deck_path = deck;
+  r.output_base = base;
+  r.output_format = "out";
+  run_scene(r, nullptr);
+  return io::read_channels(base.string() + ".out");
+}
+
+// |ours/ref − 1| of the means, or |ours − ref| for means near zero (`absolute`).
+VerificationRow mean_row(const std::string& case_name, const PairedSeries& p, const std::string& what, double limit,
+                         bool absolute, const std::string& source) {
+  const double diff = absolute ? std::abs(mean(p.test) - mean(p.ref)) : std::abs(mean(p.test) / mean(p.ref) - 1.0);
+  return {case_name, fmt::format("{} mean: {} {:.4g} vs {:.4g}", what, absolute ? "|diff|" : "rel. diff", mean(p.test), mean(p.ref)),
+          diff, fmt::format("< {:.3g}", limit), source, diff < limit};
+}
+VerificationRow std_row(const std::string& case_name, const PairedSeries& p, const std::string& what, double limit,
+                        const std::string& source) {
+  const double diff = std::abs(standard_deviation(p.test) / standard_deviation(p.ref) - 1.0);
+  return {case_name, fmt::format("{} std rel. diff", what), diff, fmt::format("< {:.3g}", limit), source, diff < limit};
+}
+VerificationRow correlation_row(const std::string& case_name, const PairedSeries& p, const std::string& what, double limit,
+                                const std::string& source) {
+  const double c = correlation(p);
+  return {case_name, fmt::format("{} correlation", what), c, fmt::format("> {:.5g}", limit), source, c > limit};
+}
+
+}  // namespace
+
+std::vector<VerificationRow> verify_turbine_validation(std::FILE* out) {
+  const auto reference = shared_dir() / "reference/openfast-runs/seed_validation_surge1000/v1_surge1000_BD/v1_surge1000_BD.out";
+  if (!std::filesystem::exists(reference)) return {};
+  fmt::print(out, "Seed §4.5.3: OC3 from rest, rotor held at 12.1 rpm, 1000 kN surge force; OpenFAST v5 + BeamDyn, 50–100 s\n");
+  const io::ChannelTable ours = run_deck(input("oc3_hywind/seed_validation_surge1000.yaml"), scratch("turbine-validation") / "run");
+  const io::ChannelTable ref = io::read_channels(reference);
+  auto at = [&](const char* name) { return paired_series(ref, name, ours, name, 50.0, 100.0); };
+  const std::string c = "turbine-validation";
+  const std::string src = "openfast-runs/seed_validation_surge1000";
+  // Platform: Morison (ours) against WAMIT (theirs) changes the periods by ≈ 1.5–2 % (free-decay
+  // checks), not the static balance of the force. Measured: surge mean +0.51 %, pitch mean
+  // +0.06 %, stds within 2.3 %, heave −0.045 m (the set-down of the surged spar; the hydrostatic
+  // models differ at the waterline).
+  std::vector<VerificationRow> rows = {
+      mean_row(c, at("PtfmSurge"), "PtfmSurge", 0.02, false, src),
+      mean_row(c, at("PtfmPitch"), "PtfmPitch", 0.01, false, src),
+      std_row(c, at("PtfmSurge"), "PtfmSurge", 0.1, src),
+      std_row(c, at("PtfmPitch"), "PtfmPitch", 0.1, src),
+      mean_row(c, at("PtfmHeave"), "PtfmHeave [m]", 0.1, true, src),
+      // Blade root (BeamDyn root frame): centrifugal axial force and flap moment means 0.034 % and
+      // 0.064 %; the once-per-revolution gravity cycle of the edge moment: amplitude 0.1 %, phase
+      // through the correlation 0.9986 (0.99: a phase error below 8°).
+      mean_row(c, at("B1RootFzr"), "B1RootFzr", 5e-3, false, src),
+      mean_row(c, at("B1RootMyr"), "B1RootMyr", 5e-3, false, src),
+      std_row(c, at("B1RootMxr"), "B1RootMxr (gravity cycle)", 1e-2, src),
+      correlation_row(c, at("B1RootMxr"), "B1RootMxr (gravity cycle)", 0.99, src),
+      // Tip: flap mean +1.3 % (BeamDyn's single 5th-order element is 1.2 % stiffer in flap than the
+      // converged blade); edge cycle std +1.5 %, correlation 0.997.
+      mean_row(c, at("B1TipTDxr"), "B1TipTDxr", 0.05, false, src),
+      std_row(c, at("B1TipTDyr"), "B1TipTDyr", 0.05, src),
+      correlation_row(c, at("B1TipTDyr"), "B1TipTDyr", 0.99, src),
+      // The flap oscillation rings 18 % larger, correlation 0.88: set off by the start and the
+      // platform pitch, its decay depends on structural damping and frequency, which differ
+      // between 23 finite volumes and one 5th-order element.
+      std_row(c, at("B1RootMyr"), "B1RootMyr", 0.5, src),
+      correlation_row(c, at("B1RootMyr"), "B1RootMyr", 0.8, src),
+  };
+  return rows;
+}
+
+std::vector<VerificationRow> verify_turbine_oc3(std::FILE* out) {
+  const auto runs = shared_dir() / "reference/openfast-runs/oc3_spar_wturb_wavesirr/glue-codes/openfast";
+  const auto reference = runs / "5MW_OC3Spar_DLL_WTurb_WavesIrr/5MW_OC3Spar_DLL_WTurb_WavesIrr_BD.out";
+  if (!std::filesystem::exists(reference)) return {};
+  fmt::print(out, "OC3 load case, 60 s: OpenFAST's TurbSim file and replayed sea; OpenFAST v5 + BeamDyn, 10–60 s\n");
+  // OpenFAST's own inputs: its TurbSim file, its sea through Wave1Elev (waves.model
+  // elevation_series), its initial state (platform at rest at the origin, 12.1 rpm, blades
+  // spun but unloaded: BeamDyn's QuasiStaticInit).
+  const auto dir = scratch("turbine-oc3");
+  std::ofstream(dir / "case.yaml") << "include: [" << input("oc3_hywind/structure.yaml").string() << ", "
+                                   << input("oc3_hywind/hydro.yaml").string() << ", " << input("oc3_hywind/mooring.yaml").string()
+                                   << ", " << input("oc3_hywind/controller.yaml").string() << ", "
+                                   << input("nrel5mw/aero.yaml").string() << ", " << input("nrel5mw/blade_structure.yaml").string()
+                                   << "]\nsimulation: {t_max_s: 60.0, dt_s: 0.02}\noutput: {format: out, decimation: 5}\n"
+                                   << "structure: {initial_conditions: {rotor_speed_rpm: 12.1}}\n"
+                                   << "wind: {model: bts, file: " << (runs / "5MW_Baseline/Wind/90m_12mps_twr.bts").string()
+                                   << ", speed_m_s: 12.0, reference_height_m: 90.0}\n"
+                                   << "waves: {model: elevation_series, file: " << reference.string()
+                                   << ", depth_m: 320.0, stretching: none}\n"
+                                   << "blades: {segments: 23, substeps: 4, start: centrifugal}\n";
+  const io::ChannelTable ours = run_deck(dir / "case.yaml", dir / "run");
+  const io::ChannelTable ref = io::read_channels(reference);
+  auto at = [&](const char* ref_name, const char* our_name, double scale = 1.0) {
+    return paired_series(ref, ref_name, ours, our_name, 10.0, 60.0, scale);
+  };
+  const std::string c = "turbine-oc3";
+  const std::string src = "openfast-runs/oc3_spar_wturb_wavesirr (_BD)";
+  std::vector<VerificationRow> rows;
+  // Issue 12 verification 4: means within 5 %. Measured: RotSpeed +0.4 %, GenPwr +0.6 %, PtfmSurge
+  // −3.6 %, PtfmPitch −4.5 %, root flap moment −1.2 %, edge moment −4.9 %, tip flap −1.7 %, tip
+  // edge −2.8 %, TwrBsMyt −4.8 % (Morison against WAMIT, rigid tower, no unsteady airfoil
+  // aerodynamics: README). Same wind and sea, so the histories follow each other: measured
+  // correlations 0.89–0.999, bound 0.85.
+  const struct {
+    const char *ref_name, *our_name;
+    double scale;  // ours → reference units
+  } channels[] = {{"RotSpeed", "RotSpeed", 1.0},   {"GenPwr", "GenPwr", 1.0},     {"PtfmSurge", "PtfmSurge", 1.0},
+                  {"PtfmPitch", "PtfmPitch", 1.0}, {"B1RootMyr", "RootMyb1", 1e3}, {"B1RootMxr", "RootMxb1", 1e3},
+                  {"B1TipTDxr", "TipDxb1", 1.0},   {"B1TipTDyr", "TipDyb1", 1.0},  {"TwrBsMyt", "TwrBsMyt", 1.0}};
+  for (const auto& ch : channels) {
+    const PairedSeries p = at(ch.ref_name, ch.our_name, ch.scale);
+    rows.push_back(mean_row(c, p, ch.ref_name, 0.05, false, src));
+    rows.push_back(correlation_row(c, p, ch.ref_name, 0.85, src));
+  }
+  // Means near zero, in their own units: blade pitch 2.80° vs 2.35° (the detuned OC3 pitch loop
+  // answers the 4 % smaller platform pitch), platform yaw −0.42° vs −0.33°.
+  rows.push_back(mean_row(c, at("BldPitch1", "BldPitch1"), "BldPitch1 [deg]", 1.0, true, src));
+  rows.push_back(mean_row(c, at("PtfmYaw", "PtfmYaw"), "PtfmYaw [deg]", 0.5, true, src));
+  // The replayed sea is OpenFAST's: Wave1Elev correlation 1.0000.
+  rows.push_back(correlation_row(c, at("Wave1Elev", "Wave1Elev"), "Wave1Elev (replayed)", 0.9999, src));
+  return rows;
+}
+
+}  // namespace fowtsim::driver
