@@ -4,7 +4,7 @@
 
 #include "decks/deck_helpers.hpp"
 #include "fowtsim/core/error.hpp"
-#include "run/suggest.hpp"
+#include "fowtsim/io/suggest.hpp"
 
 namespace fowtsim::driver {
 
@@ -27,7 +27,7 @@ std::vector<std::size_t> select_channels(const io::ValidatedDeck& deck, const st
   for (std::size_t i = 0; i < names.size(); ++i) {
     const auto index = registry.find(names[i]);
     if (!index) {
-      const std::string suggestion = did_you_mean(names[i], known);
+      const std::string suggestion = io::did_you_mean(names[i], known, io::LetterCase::ignored);
       const std::string hint = suggestion.empty() ? "available: " + known_text
                                                   : suggestion + " (available: " + known_text + ")";
       throw InputError({scene, {}, names[i], hint}, where(deck, fmt::format("output.channels[{}]", i)) +

@@ -12,7 +12,7 @@
 #include "fowtsim/io/deck.hpp"
 #include "fowtsim/io/schema.hpp"
 #include "run/output_set.hpp"
-#include "run/suggest.hpp"
+#include "fowtsim/io/suggest.hpp"
 #include "scenes/beam_scene.hpp"
 #include "scenes/floating_scene.hpp"
 #include "scenes/platform_scene.hpp"
@@ -96,7 +96,7 @@ void check_scene_keys(const std::filesystem::path& path) {
   if (loaded.root.kind == io::DeckNodeKind::map) {
     for (const io::DeckEntry& e : loaded.root.entries) {
       found += (found.empty() ? "" : ", ") + e.key;
-      if (suggestion.empty()) suggestion = did_you_mean(e.key, scene_keys);
+      if (suggestion.empty()) suggestion = io::did_you_mean(e.key, scene_keys, io::LetterCase::ignored);
     }
   }
   const bool empty = kind == io::DeckNodeKind::null || (kind == io::DeckNodeKind::map && loaded.root.entries.empty());

@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <numeric>
 
+#include "fowtsim/io/suggest.hpp"
 #include "schema_internal.hpp"
 
 namespace fowtsim::io {
@@ -41,36 +41,9 @@ std::string found_text(const DeckNode& node) {
   return "";
 }
 
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  std::iota(row.begin(), row.end(), std::size_t{0});
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t substitution = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
-      diagonal = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitution});
-    }
-  }
-  return row[b.size()];
-}
-
-// "did you mean `x`?" for the closest candidate, if it is close enough to be a typo or is the
-// written key with its unit suffix forgotten (`blade_pitch` for `blade_pitch_deg`).
+// "did you mean `x`?" for the closest candidate (io/suggest.hpp).
 std::string suggestion(std::string_view written, const std::vector<std::string>& candidates) {
-  const std::size_t limit = std::max<std::size_t>(2, written.size() / 3);
-  const std::string* best = nullptr;
-  std::size_t best_distance = limit + 1;
-  for (const std::string& candidate : candidates) {
-    const bool suffix_forgotten = candidate.starts_with(std::string(written) + "_");
-    const std::size_t distance = suffix_forgotten ? 1 : edit_distance(written, candidate);
-    if (distance < best_distance) {
-      best = &candidate;
-      best_distance = distance;
-    }
-  }
-  return best ? fmt::format("did you mean `{}`?", *best) : "";
+  return did_you_mean(written, candidates);
 }
 
 // For "12.1 rpm" where a number is expected: the unit belongs in the key name, not the value.
