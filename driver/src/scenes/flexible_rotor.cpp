@@ -100,8 +100,6 @@ FlexibleRotor::FlexibleRotor(FlexibleRotorParams params, RotorAero* aero, const 
   }
 }
 
-void FlexibleRotor::set_state(const FlexibleRotorState& s) { state_ = s; }
-
 BladeFrame FlexibleRotor::frame(const ShaftMotion& shaft, int blade) const {
   SpinPose pose;
   pose.azimuth = state_.spin.rotor_azimuth_rad;
@@ -169,7 +167,7 @@ void FlexibleRotor::start(const ShaftMotion& shaft, double azimuth_rad, double r
   last_ = root_loads(shaft);
 }
 
-// Trapezoidal rule on the linear actuator (A-stable, exact for constant input).
+// Trapezoidal rule on the linear actuator (A-stable, second order).
 void FlexibleRotor::advance_pitch(double dt, double command) {
   const double w = params_.pitch_natural_frequency_rad_s, z = params_.pitch_damping_ratio;
   Eigen::Matrix2d a;
@@ -286,15 +284,9 @@ void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const Ro
     throw NumericalError({"rotor", t + dt, "rotor spin acceleration", "reduce the blade time step"},
                          "non-finite rotor spin acceleration");
 
-  // Every blade finishes or none does: a blade that fails its small-angle check throws before
-  // touching its state, and the others are restored from a copy.
-  const std::array<beam::BeamState, kBlades> before = state_.blades;
-  try {
-    for (int b = 0; b < kBlades; ++b) steppers_[b]->finish(held ? 0.0 : s_rotor, state_.blades[b]);
-  } catch (...) {
-    state_.blades = before;
-    throw;
-  }
+  // Every blade finishes or none does: all are checked before any moves.
+  for (int b = 0; b < kBlades; ++b) steppers_[b]->solve(held ? 0.0 : s_rotor, state_.blades[b]);
+  for (int b = 0; b < kBlades; ++b) steppers_[b]->commit(state_.blades[b]);
 
   auto integrate = [&](double& x, double& v, double& a, double& mean, double s) {
     const double a1 = a + s;

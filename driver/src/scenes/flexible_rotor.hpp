@@ -139,7 +139,6 @@ class FlexibleRotor {
   // Root loads of all blades now (same form), the first sample of the next large step.
   HubLoad hub_load() const { return last_; }
   const FlexibleRotorState& state() const { return state_; }
-  void set_state(const FlexibleRotorState& s);
   const FlexibleRotorParams& params() const { return params_; }
   // Motion of blade i's pitched root frame for the shaft motion and the current spin and pitch.
   BladeFrame frame(const ShaftMotion& shaft, int blade) const;

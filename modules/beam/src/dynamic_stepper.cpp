@@ -49,6 +49,7 @@ void DynamicStepper::step(const BeamInput& input, double dt, BeamState& state) {
   for (int i = 0; i < model_.node_count(); ++i) v0_.segment<6>(6 * i) = state.velocity[i];
   dt_ = dt;
   integrate_erk(input, state, dt);
+  check_increments(state);
   commit(state);
 }
 
@@ -129,27 +130,37 @@ AffineRootLoad DynamicStepper::prepare(const BeamInput& input, const FrameAccele
 }
 
 void DynamicStepper::finish(double s, BeamState& state) {
-  a1_ = a0_ + solution_ + s * per_unit_;
-  q_ = dt_ * v0_ + (dt_ * dt_) * ((0.5 - beta_) * a0_ + beta_ * a1_);
-  v1_ = v0_ + dt_ * ((1.0 - gamma_) * a0_ + gamma_ * a1_);
+  solve(s, state);
   commit(state);
 }
 
-// Checks the step's increments, then (and only then) folds them into the state.
-void DynamicStepper::commit(BeamState& state) {
+void DynamicStepper::solve(double s, const BeamState& state) {
+  a1_ = a0_ + solution_ + s * per_unit_;
+  q_ = dt_ * v0_ + (dt_ * dt_) * ((0.5 - beta_) * a0_ + beta_ * a1_);
+  v1_ = v0_ + dt_ * ((1.0 - gamma_) * a0_ + gamma_ * a1_);
+  check_increments(state);
+}
+
+// Throws if the step's increments are not finite or not small angles; the state stays as it was.
+void DynamicStepper::check_increments(const BeamState& state) {
   const int n = model_.node_count();
   const double t_end = state.time_s + dt_;
   if (!q_.allFinite() || !v1_.allFinite())
     throw NumericalError({"beam", t_end, "increments", "reduce the beam time step"},
                          "non-finite beam increment");
-  double max_rot = 0.0;
-  for (int i = 0; i < n; ++i) max_rot = std::max(max_rot, q_.segment<3>(6 * i + 3).norm());
-  if (max_rot > options_.max_increment_rad)
+  max_rotation_ = 0.0;
+  for (int i = 0; i < n; ++i) max_rotation_ = std::max(max_rotation_, q_.segment<3>(6 * i + 3).norm());
+  if (max_rotation_ > options_.max_increment_rad)
     throw NumericalError(
         {"beam", t_end, "incremental rotation", "reduce the beam time step dt"},
         fmt::format("an incremental rotation of {:.3g} rad in one step exceeds the small-angle "
                     "limit {:.3g} rad of the piecewise-linear scheme",
-                    max_rot, options_.max_increment_rad));
+                    max_rotation_, options_.max_increment_rad));
+}
+
+// Folds the checked increments into the state.
+void DynamicStepper::commit(BeamState& state) {
+  const int n = model_.node_count();
   StepMatrixCache& cache = state.step_matrix;
   if (options_.integrator == Integrator::generalized_alpha && matrix_rebuilt_) {
     std::swap(cache.factored, rebuilt_);  // O(1): the old matrix becomes the next workspace
@@ -161,13 +172,13 @@ void DynamicStepper::commit(BeamState& state) {
   }
   update_base(q_, state);
   ++cache.age;
-  cache.turned_rad += max_rot;
+  cache.turned_rad += max_rotation_;
   for (int i = 0; i < n; ++i) {
     state.velocity[i] = v1_.segment<6>(6 * i);
     state.acceleration[i] = a1_.segment<6>(6 * i);
   }
   state.acceleration_valid = options_.integrator == Integrator::generalized_alpha;
-  state.time_s = t_end;
+  state.time_s += dt_;
 }
 
 bool DynamicStepper::step_matrix_is_stale(const StepMatrixCache& c, const StepWeights& w) const {

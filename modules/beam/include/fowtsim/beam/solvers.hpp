@@ -102,10 +102,14 @@ class DynamicStepper {
   // (frame_acceleration_load), so the step's solution is Δa(s) = A⁻¹R(0) + s A⁻¹ ∂R/∂s: one
   // extra block-tridiagonal solve. prepare() does not touch `state`; finish(s, state) must get
   // the same state and completes the step exactly as step() would with that frame acceleration.
+  // finish = solve(s), which computes and checks the increments (throwing before any state is
+  // touched), then commit(state): several beams sharing s can all be checked before any moves.
   // generalized_alpha only.
   AffineRootLoad prepare(const BeamInput& input, const FrameAccelerationDirection& direction, double dt,
                          const BeamState& state);
   void finish(double s, BeamState& state);
+  void solve(double s, const BeamState& state);
+  void commit(BeamState& state);
 
   // Where in the step the input must be sampled to keep second order: generalized-α balances
   // forces at t + (1 − αf) Δt (= t + Δt for ρ∞ = 0); the erk integrator holds the input constant
@@ -117,7 +121,7 @@ class DynamicStepper {
 
  private:
   bool step_matrix_is_stale(const StepMatrixCache& cache, const StepWeights& weights) const;
-  void commit(BeamState& state);
+  void check_increments(const BeamState& state);
   void integrate_erk(const BeamInput& input, const BeamState& state, double dt);
 
   const BeamModel& model_;
@@ -128,6 +132,7 @@ class DynamicStepper {
   StepWeights weights_;
   double dt_ = 0.0;
   double beta_ = 0.25, gamma_ = 0.5;
+  double max_rotation_ = 0.0;  // of the checked increments
   VecX v0_, a0_, q_, v1_, a1_, w_damping_, w_stiffness_, solution_, per_unit_;
   std::unique_ptr<Erk> erk_;
 };
