@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include "decks/beam_deck.hpp"
+#include "fowtsim/testing/allocation_counter.hpp"
 #include "fowtsim/testing/skip.hpp"
 #include "scenes/flexible_rotor.hpp"
 #include "scenes/turbine_blades.hpp"
@@ -111,4 +112,17 @@ TEST_CASE("blades and spin solved together conserve the rotor's angular momentum
     CHECK(drifts[2] < 2e-2);
     CHECK(std::log(drifts[1] / drifts[0]) / std::log(4.0) > 1.5);
   }
+}
+
+TEST_CASE("a large step of the blades and the spin allocates nothing", "[unit][flexible]") {
+  FlexibleRotor rotor(rotor_params(12, true), nullptr, nullptr);
+  const ShaftMotion shaft;
+  RotorDemands demands;
+  rotor.start(shaft, 0.0, 1.2, 0.0, demands, FlexibleRotor::Start::centrifugal);
+  rotor.advance(0.0, 0.02, 4, shaft, shaft, demands);  // first step: workspaces sized
+  testing::allocations = 0;
+  testing::counting = true;
+  for (int k = 1; k <= 50; ++k) rotor.advance(0.02 * k, 0.02, 4, shaft, shaft, demands);
+  testing::counting = false;
+  CHECK(testing::allocations == 0);
 }
