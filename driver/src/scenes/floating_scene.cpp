@@ -230,7 +230,12 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
     }
     blades->advance(stage_loads, shaft_at, demands(), t, dt, state);
   };
+  SeaModules::Memory sea_memory;
+  std::vector<aero::NodeResult> aero_memory;
   scene.row = [&](double t, std::span<double> row) {
+    // The row's own evaluation must leave the solvers' warm starts as the step left them.
+    sea_memory = sea.memory();
+    if (rotor) rotor->save_memory(aero_memory);
     multibody::AppliedLoads loads;
     stage_loads.loads(t, state, loads);
     const multibody::Output mo = multibody::Multibody::outputs(model, loads, state, t);
@@ -245,6 +250,8 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
       std::copy(c.begin(), c.begin() + 5, v.begin() + static_cast<long>(controller_first));
     }
     for (std::size_t k = 0; k < picked.size(); ++k) row[k] = values[picked[k]];
+    sea.restore(sea_memory);
+    if (rotor) rotor->restore_memory(aero_memory);
   };
   RunReport report = [&] {
     try {

@@ -44,6 +44,12 @@ class RotorAero {
   // Hub-height wind speed at the probe (for the controller's record 27 and the channels).
   Vec3 probe_wind(double t) const { return wind_->velocity(wind_->params().probe_point_m, t); }
 
+  // What an evaluation leaves for the next one: each node's BEM root, the warm start of its next
+  // solve (and, with held inductions, its induced velocities). An output row evaluates between
+  // steps and restores it, so results do not depend on decimation. No allocation once sized.
+  void save_memory(std::vector<aero::NodeResult>& memory) const { memory = output_.nodes; }
+  void restore_memory(const std::vector<aero::NodeResult>& memory) { output_.nodes = memory; }
+
   std::vector<ChannelInfo> channels() const;  // aero channels, then Wind1VelX/Y/Z
   void channel_values(double t, std::span<double> out) const;
 

@@ -40,6 +40,12 @@ class SeaModules {
   // Random seeds in use (the wave seed, when there is a sea).
   std::vector<std::uint64_t> seeds() const;
 
+  // What an evaluation leaves for the next one (the mooring solver's warm start): an output row
+  // evaluates the sea between steps and restores this, so results do not depend on decimation.
+  using Memory = mooring::QuasiStaticMooring::State;
+  const Memory& memory() const { return mooring_state_; }
+  void restore(const Memory& memory) { mooring_state_ = memory; }
+
  private:
   waves::WaveParams wave_params_;
   bool has_waves_ = false;
