@@ -105,6 +105,14 @@ int main(int argc, char** argv) {
                   "generalized-α: rebuild the beam step matrix at least every N steps (1 = every step, "
                   "the seed's scheme; default 20)")
       ->check(positive("a positive whole number"));
+  double checkpoint_every = 0;
+  std::string restart;
+  run->add_option("--checkpoint-every", checkpoint_every,
+                  "write the scene's whole state to <output>.chk every T seconds (floating turbine)")
+      ->check(positive("a positive number of seconds"));
+  run->add_option("--restart", restart,
+                  "continue bit-identically from a checkpoint of the same deck; the output starts at its time")
+      ->check(CLI::ExistingFile);
 
   std::string ref, test, tolerance_file;
   std::vector<std::string> channels;
@@ -163,6 +171,8 @@ int main(int argc, char** argv) {
       if (segments > 0) request.beam_segments = segments;
       if (!integrator.empty()) request.beam_integrator = integrator;
       if (matrix_age > 0) request.beam_matrix_max_age = matrix_age;
+      if (checkpoint_every > 0) request.checkpoint_every_s = checkpoint_every;
+      if (!restart.empty()) request.restart_path = restart;
       return run_command(request);
     }
     if (*compare) {

@@ -17,6 +17,8 @@ struct RunRequest {
   std::optional<int> beam_segments;                  // --segments: finite volumes per beam
   std::optional<std::string> beam_integrator;        // --integrator: generalized_alpha | erk
   std::optional<int> beam_matrix_max_age;            // --matrix-age: generalized-α step-matrix reuse
+  std::optional<double> checkpoint_every_s;          // --checkpoint-every: write <output>.chk every T [s]
+  std::optional<std::filesystem::path> restart_path; // --restart: continue from this checkpoint
 };
 
 struct RunReport {

@@ -28,6 +28,7 @@
 #include "fowtsim/beam/solvers.hpp"
 #include "fowtsim/multibody/kinematics.hpp"
 #include "fowtsim/multibody/model.hpp"
+#include "run/checkpoint.hpp"
 
 namespace fowtsim::driver {
 
@@ -139,6 +140,9 @@ class FlexibleRotor {
   // Root loads of all blades now (same form), the first sample of the next large step.
   HubLoad hub_load() const { return last_; }
   const FlexibleRotorState& state() const { return state_; }
+  // Everything that changes (state, shaft motion, last root loads), for checkpoints.
+  void save(CheckpointWriter& w) const;
+  void load(CheckpointReader& r);
   const FlexibleRotorParams& params() const { return params_; }
   // Motion of blade i's pitched root frame for the shaft motion and the current spin and pitch.
   BladeFrame frame(const ShaftMotion& shaft, int blade) const;

@@ -61,6 +61,16 @@ class Controller {
         params_);
   }
   const control::ControllerOutput& output() const { return output_; }
+  // A DISCON library's state lives in the library: only the built-in law can be checkpointed.
+  void save(CheckpointWriter& w) const {
+    w.put(std::get<control::BaselineState>(state_));
+    w.put(output_);
+  }
+  void load(CheckpointReader& r) {
+    r.get(std::get<control::BaselineState>(state_));
+    r.get(output_);
+  }
+  bool can_checkpoint() const { return std::holds_alternative<control::BaselineState>(state_); }
   // The last call a DISCON library gets (status −1: it closes its files); nothing for the built-in law.
   void finish(double t) {
     if (auto* p = std::get_if<control::ExternalController::Params>(&params_))
@@ -89,6 +99,7 @@ class StageLoads final : public multibody::LoadProvider {
     pitch_ = pitch_rad;
   }
   double pitch_rad() const { return pitch_; }
+  double generator_torque_held_N_m() const { return generator_torque_; }
   void loads(double t, const multibody::State& s, multibody::AppliedLoads& out) override {
     sea_.evaluate(t, platform_motion(s));
     const Vec6 load = sea_.platform_load();
@@ -253,6 +264,46 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
     sea.restore(sea_memory);
     if (rotor) rotor->restore_memory(aero_memory);
   };
+  // Checkpoints: the scene's whole changing state (the wind field and the sea are rebuilt from the
+  // deck, identically).
+  if (!controller || controller->can_checkpoint()) {
+    scene.save = [&](CheckpointWriter& w) {
+      w.put(state.position_m);
+      w.put(state.orientation);
+      w.put(state.velocity_m_s);
+      w.put(state.angular_velocity_rad_s);
+      for (const double x : {state.rotor_azimuth_rad, state.rotor_speed_rad_s, state.generator_azimuth_rad,
+                             state.generator_speed_rad_s, state.rotor_acceleration_rad_s2, state.generator_acceleration_rad_s2,
+                             state.nacelle_yaw_rad, state.nacelle_yaw_rate_rad_s, state.nacelle_yaw_acceleration_rad_s2})
+        w.put(x);
+      w.put(stage_loads.generator_torque_held_N_m());
+      w.put(stage_loads.pitch_rad());
+      if (controller) controller->save(w);
+      w.put(sea.memory());
+      if (rotor) rotor->save(w);
+      if (blades) blades->save(w);
+    };
+    scene.load = [&](CheckpointReader& r) {
+      r.get(state.position_m);
+      r.get(state.orientation);
+      r.get(state.velocity_m_s);
+      r.get(state.angular_velocity_rad_s);
+      for (double* x : {&state.rotor_azimuth_rad, &state.rotor_speed_rad_s, &state.generator_azimuth_rad,
+                        &state.generator_speed_rad_s, &state.rotor_acceleration_rad_s2, &state.generator_acceleration_rad_s2,
+                        &state.nacelle_yaw_rad, &state.nacelle_yaw_rate_rad_s, &state.nacelle_yaw_acceleration_rad_s2})
+        r.get(*x);
+      double torque = 0.0, pitch = 0.0;
+      r.get(torque);
+      r.get(pitch);
+      stage_loads.hold(torque, pitch);
+      if (controller) controller->load(r);
+      SeaModules::Memory memory;
+      r.get(memory);
+      sea.restore(memory);
+      if (rotor) rotor->load(r);
+      if (blades) blades->load(r);
+    };
+  }
   RunReport report = [&] {
     try {
       return run_fixed_steps(request, deck, std::move(scene), progress);

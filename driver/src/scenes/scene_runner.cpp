@@ -3,6 +3,7 @@
 #include <chrono>
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 
 #include <fmt/format.h>
 
@@ -47,7 +48,32 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
   }
   const std::string format = request.output_format.value_or(deck.has("output") ? deck.string("output.format") : "h5");
   const long decimation = deck.has("output") ? deck.integer("output.decimation") : 1;
-  OutputSet outputs(request.output_base.value_or(std::filesystem::path("runs") / request.deck_path.stem()), format);
+  const std::filesystem::path base = request.output_base.value_or(std::filesystem::path("runs") / request.deck_path.stem());
+  // Checkpoints (issue 16): <output>.chk every T, and a restart from one, both checked first.
+  long checkpoint_steps = 0, k0 = 0;
+  if ((request.checkpoint_every_s || request.restart_path) && !scene.save)
+    throw InputError({"scene", std::nullopt, "--checkpoint-every/--restart", "the floating-turbine scene"},
+                     "this scene does not write checkpoints (the floating turbine does)");
+  if (request.checkpoint_every_s) {
+    checkpoint_steps = std::lround(*request.checkpoint_every_s / dt);
+    if (checkpoint_steps < 1 || std::abs(checkpoint_steps * dt - *request.checkpoint_every_s) > 1e-9 * *request.checkpoint_every_s)
+      throw InputError({"scene", std::nullopt, "--checkpoint-every", fmt::format("a multiple of dt_s = {:.10g} s", dt)},
+                       fmt::format("--checkpoint-every {:.10g} is not a whole number of steps of {:.10g} s",
+                                   *request.checkpoint_every_s, dt));
+  }
+  if (request.restart_path) {
+    std::ifstream is(*request.restart_path, std::ios::binary);
+    const CheckpointHeader header = read_checkpoint_header(is, *request.restart_path, deck.hash(), dt);
+    if (header.step >= steps)
+      throw InputError({"scene", std::nullopt, "--restart", "a checkpoint before the end of the run"},
+                       fmt::format("{}: the checkpoint is at t = {:.10g} s, the run ends at {:.10g} s",
+                                   request.restart_path->string(), header.step * dt, t_max));
+    CheckpointReader reader(is, *request.restart_path);
+    scene.load(reader);
+    k0 = header.step;
+  }
+  const std::filesystem::path checkpoint_file = base.string() + ".chk";
+  OutputSet outputs(base, format);
   scene.metadata.version = kVersion;
   scene.metadata.deck_path = request.deck_path.string();
   scene.metadata.deck_hash = deck.hash();
@@ -57,6 +83,7 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
 
   RunReport report;
   report.outputs = outputs.paths();
+  if (checkpoint_steps > 0) report.outputs.push_back(checkpoint_file);
   report.t_max_s = t_max;
   std::vector<double> row(scene.written.size());
   auto write_row = [&](double t) {
@@ -65,8 +92,8 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
   };
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  double t = 0.0;
-  long k = 0;
+  long k = k0;
+  double t = static_cast<double>(k) * dt;
   try {
     write_row(t);
     while (k < steps && interrupt_signal() == 0) {  // a signal stops the run at the end of a step
@@ -74,6 +101,8 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
       ++k;
       t = static_cast<double>(k) * dt;
       if (k % decimation == 0) write_row(t);
+      if (checkpoint_steps > 0 && k % checkpoint_steps == 0)
+        write_checkpoint(checkpoint_file, {hash_field(deck.hash()), k, dt}, scene.save);
       if (progress) progress(t, t_max);
     }
   } catch (const std::exception& e) {  // numerical trouble, or a failing external controller
@@ -82,7 +111,7 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
   }
   report.wall_s = elapsed();
   report.simulated_s = t;
-  report.large_steps = k;
+  report.large_steps = k - k0;
   if (k < steps) report.interrupted_by = interrupt_signal();
   outputs.finish({report.wall_s, report.interrupted_by ? interrupted_status(t, report.interrupted_by) : "completed", t});
   return report;

@@ -8,6 +8,7 @@
 #include "fowtsim/core/channels.hpp"
 #include "fowtsim/io/output_sink.hpp"
 #include "fowtsim/io/schema.hpp"
+#include "run/checkpoint.hpp"
 #include "run/run_types.hpp"
 
 namespace fowtsim::driver {
@@ -20,6 +21,9 @@ struct FixedStepScene {
   io::RunMetadata metadata;                           // version, deck path and hash, dt filled in by run()
   std::function<void(double t, double dt)> step;      // advance from t to t + dt
   std::function<void(double t, std::span<double> row)> row;  // values of `written` at t
+  // The scene's whole changing state, for checkpoints and restarts (empty: not supported).
+  std::function<void(CheckpointWriter&)> save;
+  std::function<void(CheckpointReader&)> load;
 };
 
 // Runs t = 0, dt, …, t_max (deck or --tmax; dt must divide it, checked before any file is opened),

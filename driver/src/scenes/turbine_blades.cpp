@@ -176,6 +176,28 @@ void TurbineBlades::use_step_spin_profile(double t) {
                     mean_generator_acceleration_};
 }
 
+void TurbineBlades::save(CheckpointWriter& w) const {
+  rotor_.save(w);
+  w.put(held_.force_h_N);
+  w.put(held_.moment_h_N_m);
+  w.put(spin_before_);
+  w.put(profile_.t0);
+  w.put(profile_.at_t0);
+  w.put(mean_rotor_acceleration_);
+  w.put(mean_generator_acceleration_);
+}
+
+void TurbineBlades::load(CheckpointReader& r) {
+  rotor_.load(r);
+  r.get(held_.force_h_N);
+  r.get(held_.moment_h_N_m);
+  r.get(spin_before_);
+  r.get(profile_.t0);
+  r.get(profile_.at_t0);
+  r.get(mean_rotor_acceleration_);
+  r.get(mean_generator_acceleration_);
+}
+
 void TurbineBlades::copy_spin(multibody::State& state) const {
   const SpinState& s = rotor_.state().spin;
   state.rotor_azimuth_rad = s.rotor_azimuth_rad;

@@ -62,6 +62,9 @@ class TurbineBlades {
 
   const ShaftMotion& shaft() const { return rotor_.shaft(); }
   const FlexibleRotor& rotor() const { return rotor_; }
+  // Everything that changes, for checkpoints.
+  void save(CheckpointWriter& w) const;
+  void load(CheckpointReader& r);
 
   std::vector<ChannelInfo> channels() const;
   void channel_values(std::span<double> out) const;

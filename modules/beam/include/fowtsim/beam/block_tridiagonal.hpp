@@ -5,6 +5,7 @@
 // pivoting), which is stable for the block diagonally dominant systems a step produces
 // (mass + Δt² stiffness).
 // All storage is sized once; factor/solve do not allocate.
+#include <array>
 #include <vector>
 
 #include "fowtsim/core/types.hpp"
@@ -30,6 +31,11 @@ class BlockTridiagonal {
   void multiply(const VecX& x, VecX& y) const;
   // The full matrix (for analysis and tests; allocates).
   MatX dense() const;
+
+  // The storage — diagonal, upper, lower and (after factor()) pivot-inverse blocks — for
+  // checkpoints that must restore a factored matrix bit for bit.
+  std::array<const std::vector<Mat6>*, 4> storage() const { return {&diag_, &upper_, &lower_, &pivot_inverses_}; }
+  std::array<std::vector<Mat6>*, 4> storage() { return {&diag_, &upper_, &lower_, &pivot_inverses_}; }
 
   // Factor in place (destroys the matrix) and solve A x = b; b is overwritten with x.
   // Returns false if a pivot block is singular.

@@ -1,0 +1,123 @@
+#pragma once
+// Checkpoints of a fixed-step scene (issue 16): the whole changing state of a scene in one binary
+// file, so that `fowtsim run DECK --restart FILE` continues bit-identically to an uninterrupted
+// run. Values are written as their bytes (doubles bit for bit); a header ties the file to the
+// deck (hash), the step and the time step, and the reader refuses anything else.
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "fowtsim/core/types.hpp"
+
+namespace fowtsim::driver {
+
+class CheckpointWriter {
+ public:
+  explicit CheckpointWriter(std::ostream& os) : os_(os) {}
+  template <class T>
+    requires std::is_trivially_copyable_v<T>
+  void put(const T& v) {
+    os_.write(reinterpret_cast<const char*>(&v), sizeof(T));
+  }
+  template <class S, int R, int C, int O, int MR, int MC>
+  void put(const Eigen::Matrix<S, R, C, O, MR, MC>& m) {
+    if constexpr (R == Eigen::Dynamic || C == Eigen::Dynamic) {
+      put(static_cast<std::int64_t>(m.rows()));
+      put(static_cast<std::int64_t>(m.cols()));
+    }
+    os_.write(reinterpret_cast<const char*>(m.data()), static_cast<std::streamsize>(sizeof(S) * m.size()));
+  }
+  void put(const Eigen::Quaterniond& q) { put(Eigen::Vector4d(q.coeffs())); }
+  template <class T>
+  void put(const std::vector<T>& v) {
+    put(static_cast<std::uint64_t>(v.size()));
+    for (const T& x : v) put(x);
+  }
+  template <class T, std::size_t N>
+  void put(const std::array<T, N>& a) {
+    for (const T& x : a) put(x);
+  }
+
+ private:
+  std::ostream& os_;
+};
+
+class CheckpointReader {
+ public:
+  CheckpointReader(std::istream& is, std::filesystem::path file) : is_(is), file_(std::move(file)) {}
+  template <class T>
+    requires std::is_trivially_copyable_v<T>
+  void get(T& v) {
+    read(reinterpret_cast<char*>(&v), sizeof(T));
+  }
+  // A dynamic matrix must already have the size the writer had.
+  template <class S, int R, int C, int O, int MR, int MC>
+  void get(Eigen::Matrix<S, R, C, O, MR, MC>& m) {
+    if constexpr (R == Eigen::Dynamic || C == Eigen::Dynamic) {
+      std::int64_t rows = 0, cols = 0;
+      get(rows);
+      get(cols);
+      if (rows != m.rows() || cols != m.cols()) mismatch("a matrix's size");
+    }
+    read(reinterpret_cast<char*>(m.data()), sizeof(S) * static_cast<std::size_t>(m.size()));
+  }
+  void get(Eigen::Quaterniond& q) {
+    Eigen::Vector4d c;
+    get(c);
+    q.coeffs() = c;
+  }
+  // A vector of the size the writer had; `expected` (if ≥ 0) must match it.
+  template <class T>
+  void get(std::vector<T>& v, long expected = -1) {
+    std::uint64_t n = 0;
+    get(n);
+    if (expected >= 0 && n != static_cast<std::uint64_t>(expected)) mismatch("a vector's size");
+    v.resize(n);
+    for (T& x : v) get(x);
+  }
+  template <class T, std::size_t N>
+  void get(std::array<T, N>& a) {
+    for (T& x : a) get(x);
+  }
+  [[noreturn]] void mismatch(const std::string& what) const;
+
+ private:
+  void read(char* p, std::size_t n);
+  std::istream& is_;
+  std::filesystem::path file_;
+};
+
+struct CheckpointHeader {
+  std::array<char, 40> deck_hash{};  // io::ValidatedDeck::hash(), zero-padded
+  long step = 0;        // large steps taken
+  double dt_s = 0.0;    // the scene's step
+};
+
+// Writes header + scene blob to `file` through a temporary name renamed at the end (a crash while
+// writing leaves the previous checkpoint).
+template <class SaveScene>
+void write_checkpoint(const std::filesystem::path& file, const CheckpointHeader& header, SaveScene&& save) {
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
+    os.write("FOWTSIMCHK1", 11);
+    CheckpointWriter w(os);
+    w.put(header);
+    save(w);
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+// Opens `file`, checks the magic and that it belongs to `deck_hash` with step `dt_s` (InputError
+// naming the file otherwise) and returns its header; the reader continues with the scene blob.
+CheckpointHeader read_checkpoint_header(std::ifstream& is, const std::filesystem::path& file, const std::string& deck_hash,
+                                        double dt_s);
+std::array<char, 40> hash_field(const std::string& deck_hash);
+
+}  // namespace fowtsim::driver

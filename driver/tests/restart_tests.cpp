@@ -1,0 +1,71 @@
+// Checkpoints and restarts (issue 16): a run restarted from a checkpoint continues bit-identically
+// to the uninterrupted run, on the rigid-blade and the flexible-blade turbine.
+#include <fstream>
+
+#include <catch2/catch.hpp>
+
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/io/readers.hpp"
+#include "fowtsim/testing/skip.hpp"
+#include "run/run_scene.hpp"
+#include "run_request.hpp"
+
+using namespace fowtsim;
+using namespace fowtsim::driver;
+
+namespace {
+
+void check_restart(const std::filesystem::path& deck, const std::string& overrides, const std::string& name) {
+  const auto dir = testing::scratch_dir("restart_" + name);
+  std::ofstream(dir / "deck.yaml") << "include: [" << deck.string() << "]\noutput: {format: h5, decimation: 1}\n" << overrides;
+  // Uninterrupted, with a checkpoint every 4 s: one, at 4 s, in whole.chk.
+  RunRequest whole = run_request(dir / "deck.yaml", dir / "whole", "h5");
+  whole.t_max_s = 6.0;
+  whole.checkpoint_every_s = 4.0;
+  run_scene(whole, nullptr);
+  RunRequest restarted = run_request(dir / "deck.yaml", dir / "restarted", "h5");
+  restarted.t_max_s = 6.0;
+  restarted.restart_path = dir / "whole.chk";
+  run_scene(restarted, nullptr);
+  const io::ChannelTable a = io::read_channels(dir / "whole.h5");
+  const io::ChannelTable b = io::read_channels(dir / "restarted.h5");
+  REQUIRE(a.names == b.names);
+  REQUIRE(b.time().front() == 4.0);
+  const std::size_t offset = a.rows() - b.rows();
+  REQUIRE(a.time()[offset] == 4.0);
+  // Bit for bit from the checkpoint's own row on, every channel.
+  for (std::size_t c = 0; c < a.names.size(); ++c)
+    for (std::size_t i = 0; i < b.rows(); ++i) {
+      INFO(a.names[c] << " at t = " << b.time()[i]);
+      REQUIRE(a.columns[c][offset + i] == b.columns[c][i]);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("a restart continues the rigid-blade turbine bit-identically", "[verification][run]") {
+  check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_steady_15mps.yaml",
+                "waves: {model: jonswap, hs_m: 4.0, tp_s: 9.0, seed: 3, duration_s: 200.0, dt_s: 0.25, depth_m: 320.0}\n",
+                "rigid");
+}
+
+TEST_CASE("a restart continues the flexible-blade turbine bit-identically", "[verification][run]") {
+  check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml", "", "flexible");
+}
+
+TEST_CASE("a checkpoint of another deck or step is refused before the run", "[unit][run]") {
+  const auto dir = testing::scratch_dir("restart_refused");
+  const auto deck = testing::source_dir() / "inputs/oc3_hywind/free_decay_pitch.yaml";
+  RunRequest first = run_request(deck, dir / "first", "h5");
+  first.t_max_s = 1.0;
+  first.checkpoint_every_s = 0.5;
+  run_scene(first, nullptr);
+  RunRequest other = run_request(testing::source_dir() / "inputs/oc3_hywind/free_decay_surge.yaml", dir / "other", "h5");
+  other.t_max_s = 1.0;
+  other.restart_path = dir / "first.chk";
+  CHECK_THROWS_AS(run_scene(other, nullptr), InputError);
+  CHECK_FALSE(std::filesystem::exists(dir / "other.h5"));
+  RunRequest bad_every = run_request(deck, dir / "bad", "h5");
+  bad_every.checkpoint_every_s = 0.0123;
+  CHECK_THROWS_AS(run_scene(bad_every, nullptr), InputError);
+}
