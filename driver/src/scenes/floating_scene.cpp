@@ -180,7 +180,13 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
                                                                      tip, structure.rotor.tip_radius_m));
   }
   std::optional<Controller> controller;
-  if (deck.has("controller")) controller.emplace(controller_params(deck.section("controller")));
+  double overspeed_rad_s = 0.0;  // 30 % above the built-in law's rated rotor speed (0: unknown)
+  if (deck.has("controller")) {
+    ControllerParams cp = controller_params(deck.section("controller"));
+    if (const auto* b = std::get_if<control::BaselineParams>(&cp))
+      overspeed_rad_s = 1.3 * b->rated_generator_speed_rad_s / structure.drivetrain.gearbox_ratio;
+    controller.emplace(std::move(cp));
+  }
   std::optional<TurbineBlades> blades;
   if (deck.has("blades")) blades.emplace(deck, model, rotor ? &*rotor : nullptr);
   StageLoads stage_loads(model, sea, rotor ? &*rotor : nullptr, blades ? &*blades : nullptr);
@@ -219,9 +225,20 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
       if (c.name != "GenSpeed") all.push_back(c);
   const std::vector<std::size_t> picked = select_channels(deck, all, "floating");
 
+  std::vector<std::string> input_warnings = sea.warnings();
+  if (rotor && rotor->params().number_of_blades > 0) {
+    const wind::WindParams& w = rotor->wind().params();
+    // NREL 5MW cut-out 25 m/s (the controller has no shutdown): a spinning rotor above it.
+    if (w.speed_m_s > 25.0 && structure.initial_conditions.rotor_speed_rpm != 0.0)
+      input_warnings.push_back(fmt::format("wind {:.3g} m/s beyond the 25 m/s cut-out with the rotor spinning (the controller "
+                                           "does not shut the turbine down)", w.speed_m_s));
+  }
+  double max_rotor_speed = std::abs(state.rotor_speed_rad_s);
   FixedStepScene scene;
   for (std::size_t i : picked) scene.written.push_back(all[i]);
   scene.metadata.seeds = sea.seeds();
+  if (rotor && rotor->wind().params().model == wind::WindModel::turbulent)
+    scene.metadata.seeds.push_back(rotor->wind().params().turbulence.seed);
   scene.metadata.extra = {{"scene", "floating"}};
   std::vector<double> values(all.size());
   const double gearbox = structure.drivetrain.gearbox_ratio;
@@ -237,9 +254,11 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
     }
     if (!blades) {
       multibody::Multibody::advance(model, stage_loads, t, dt, state);
+      max_rotor_speed = std::max(max_rotor_speed, std::abs(state.rotor_speed_rad_s));
       return;
     }
     blades->advance(stage_loads, shaft_at, demands(), t, dt, state);
+    max_rotor_speed = std::max(max_rotor_speed, std::abs(state.rotor_speed_rad_s));
   };
   SeaModules::Memory sea_memory;
   std::vector<aero::NodeResult> aero_memory;
@@ -313,13 +332,27 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
     }
   }();
   if (controller) controller->finish(report.simulated_s);
+  for (std::string& w : input_warnings) report.warnings.push_back(std::move(w));
+  if (overspeed_rad_s > 0.0 && max_rotor_speed > overspeed_rad_s)
+    report.warnings.push_back(fmt::format("rotor overspeed: {:.3g} rpm, more than 30 % above the controller's rated {:.3g} rpm",
+                                          max_rotor_speed * 30.0 / std::numbers::pi, overspeed_rad_s / 1.3 * 30.0 / std::numbers::pi));
+  if (blades) report.substeps = blades->substeps();
   if (rotor && rotor->wind().outside_queries() > 0)
     report.warnings.push_back(fmt::format("{} wind queries fell outside the turbulence grid (deflected tips or a displaced "
                                           "rotor beyond its edge) and took the mean wind profile there",
                                           rotor->wind().outside_queries()));
-  report.coupling = blades ? "rigid multibody with sea loads at every RK4 stage; " + blades->description() +
-                                 "; controller at the large step"
-                           : "rigid multibody; sea and rotor loads at every RK4 stage; controller at the large step";
+  // What this scene coupled, from what the deck holds.
+  std::vector<std::string> parts{"rigid multibody"};
+  if (deck.has("hydro") || deck.has("mooring"))
+    parts.push_back(std::string(deck.has("hydro") ? "hydro" : "") + (deck.has("hydro") && deck.has("mooring") ? " + " : "") +
+                    (deck.has("mooring") ? "mooring" : "") + (deck.has("waves") ? " in waves" : " in still water") +
+                    " at every RK4 stage");
+  if (blades) parts.push_back(blades->description() + (rotor ? ", BEM on the deflected blades" : ", no aerodynamics"));
+  else if (rotor) parts.push_back("rigid blades with BEM at every RK4 stage");
+  else parts.push_back("rigid blades, no aerodynamics");
+  parts.push_back(controller ? "controller at the large step" : "no controller (generator torque 0, pitch held)");
+  report.coupling.clear();
+  for (const std::string& p : parts) report.coupling += (report.coupling.empty() ? "" : "; ") + p;
   return report;
 }
 

@@ -75,13 +75,20 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
   const std::filesystem::path checkpoint_file = base.string() + ".chk";
   OutputSet outputs(base, format);
   scene.metadata.version = kVersion;
-  scene.metadata.deck_path = request.deck_path.string();
+  scene.metadata.deck_path = std::filesystem::absolute(request.deck_path).lexically_normal().string();
   scene.metadata.deck_hash = deck.hash();
   scene.metadata.dt_s = dt;
   scene.metadata.dt_coupling_s = dt;
   outputs.begin(scene.written, scene.metadata);
 
   RunReport report;
+  // A run far outside sense still runs, but says so (e.g. dt 1e-12 s wrote 600 MB in 60 s).
+  const double rows = static_cast<double>(steps - k0) / static_cast<double>(decimation) + 1.0;
+  const double bytes = rows * static_cast<double>(scene.written.size() + 1) * (format == "both" ? 2.0 * 8.0 : 8.0);
+  if (steps - k0 > 50'000'000L)
+    report.warnings.push_back(fmt::format("{} steps of {:.3g} s: check simulation.dt_s", steps - k0, dt));
+  if (bytes > 2e9)
+    report.warnings.push_back(fmt::format("about {:.1f} GB of output: raise output.decimation or pick output.channels", bytes / 1e9));
   report.outputs = outputs.paths();
   if (checkpoint_steps > 0) report.outputs.push_back(checkpoint_file);
   report.t_max_s = t_max;

@@ -1,5 +1,7 @@
 #include "scenes/sea_modules.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
 #include "decks/hydro_deck.hpp"
@@ -101,6 +103,24 @@ Mat6 SeaModules::mooring_stiffness(const FrameMotion& pose) const {
 std::vector<std::uint64_t> SeaModules::seeds() const {
   if (has_waves_) return {wave_params_.seed};
   return {};
+}
+
+std::vector<std::string> SeaModules::warnings() const {
+  std::vector<std::string> out;
+  if (!has_waves_) return out;
+  // Deep-water steepness H/L against the breaking limit 1/7 (Michell 1893): a linear sea that
+  // steep is outside the theory the wave model rests on.
+  const bool irregular = wave_params_.model == waves::WaveModel::jonswap || wave_params_.model == waves::WaveModel::pierson_moskowitz;
+  const bool regular = wave_params_.model == waves::WaveModel::regular;
+  if (!irregular && !regular) return out;
+  const double h = irregular ? wave_params_.hs_m : wave_params_.height_m;
+  const double period = irregular ? wave_params_.tp_s : wave_params_.period_s;
+  const double length = 9.80665 * period * period / (2.0 * 3.141592653589793);
+  if (h / length > 1.0 / 7.0)
+    out.push_back(fmt::format("the sea is steeper than the breaking limit: {} {:.3g} m at {} {:.3g} s gives H/L = {:.3f} > 1/7 "
+                              "(deep water); linear waves do not hold",
+                              irregular ? "Hs" : "H", h, irregular ? "Tp" : "T", period, h / length));
+  return out;
 }
 
 }  // namespace fowtsim::driver

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "fowtsim/core/channels.hpp"
@@ -37,6 +38,8 @@ class SeaModules {
   // Linearised 6×6 mooring stiffness at `pose` (analytic, about the reference point, inertial
   // axes; mooring/stiffness.hpp); zero without mooring.
   Mat6 mooring_stiffness(const FrameMotion& pose) const;
+  // Inputs far outside sense, for the run summary: a sea steeper than the breaking limit.
+  std::vector<std::string> warnings() const;
   // Random seeds in use (the wave seed, when there is a sea).
   std::vector<std::uint64_t> seeds() const;
 
