@@ -48,10 +48,12 @@ CLI::Validator positive(const char* what) {
 }
 
 int compare_command(const std::string& ref, const std::string& test, const std::vector<std::string>& channels,
-                    std::optional<double> rtol, std::optional<double> atol, const std::string& tolerance_file) {
+                    std::optional<double> rtol, std::optional<double> atol, const std::string& tolerance_file,
+                    const std::vector<double>& window, bool stats) {
   CompareOptions options = tolerance_file.empty() ? CompareOptions{} : load_tolerance_file(tolerance_file);
-  if (rtol) options.default_tolerance.rtol = *rtol;
-  if (atol) options.default_tolerance.atol = *atol;
+  if (rtol || atol) options.default_tolerance = {rtol.value_or(0.0), atol.value_or(0.0), 0.0};
+  if (window.size() == 2) options.window = std::pair(window[0], window[1]);
+  options.statistics = stats;
   if (!channels.empty()) options.channels = channels;
   const ComparisonReport report = compare_tables(io::read_channels(ref), io::read_channels(test), options);
   print_comparison(stdout, report);
@@ -121,8 +123,15 @@ int main(int argc, char** argv) {
   compare->add_option("reference", ref, "reference output")->required()->check(CLI::ExistingFile);
   compare->add_option("test", test, "output to check")->required()->check(CLI::ExistingFile);
   compare->add_option("--channels", channels, "channels to compare (default: all common)")->delimiter(',');
-  auto* rtol_opt = compare->add_option("--rtol", rtol, "relative tolerance (default 1e-6)")->check(CLI::NonNegativeNumber);
-  auto* atol_opt = compare->add_option("--atol", atol, "absolute tolerance (default 1e-9)")->check(CLI::NonNegativeNumber);
+  auto* rtol_opt = compare->add_option("--rtol", rtol,
+                                       "relative tolerance (default: 1e-3 of the value plus 1e-3 of the channel's range; "
+                                       "with --rtol/--atol: |test − ref| ≤ atol + rtol·|ref|)")
+                      ->check(CLI::NonNegativeNumber);
+  auto* atol_opt = compare->add_option("--atol", atol, "absolute tolerance, channel unit (default 0 with --rtol)")->check(CLI::NonNegativeNumber);
+  std::vector<double> window;
+  compare->add_option("--window", window, "compare only over T0 T1 [s] (skip start-up transients)")->expected(2);
+  bool stats = false;
+  compare->add_flag("--stats", stats, "compare mean, std, min and max per channel instead of sample by sample");
   auto* tol_opt = compare->add_option("--tolerances", tolerance_file, "per-channel tolerance file (YAML)")->check(CLI::ExistingFile);
   tol_opt->excludes(rtol_opt)->excludes(atol_opt);
 
@@ -177,7 +186,7 @@ int main(int argc, char** argv) {
     }
     if (*compare) {
       return compare_command(ref, test, channels, rtol_opt->count() ? std::optional(rtol) : std::nullopt,
-                             atol_opt->count() ? std::optional(atol) : std::nullopt, tolerance_file);
+                             atol_opt->count() ? std::optional(atol) : std::nullopt, tolerance_file, window, stats);
     }
     if (*turbulence) return run_turbulence_command(wind_deck, wind_out.empty() ? std::nullopt : std::optional<std::filesystem::path>(wind_out), stdout);
     if (*verify) return verify_command(cases, shared_dir);

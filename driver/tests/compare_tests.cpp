@@ -75,3 +75,66 @@ TEST_CASE("tables with no common time window are an error", "[unit][compare]") {
   for (double& t : late.columns[0]) t += 100.0;
   CHECK_THROWS_AS(compare_tables(sine_table(0.1), late, {}), InputError);
 }
+
+TEST_CASE("the default tolerance scales its absolute part with each channel's range", "[unit][compare]") {
+  // A 0.05 % offset of the range passes the code-to-code default (1e-3·|ref| + 1e-3·range) even at
+  // the zero crossings of A, where a purely relative bound fails; a 1 % error fails it.
+  auto shifted = sine_table(0.1);
+  for (double& a : shifted.columns[1]) a += 0.0005 * 2.0;
+  CHECK(compare_tables(sine_table(0.1), shifted, {}).pass());
+  CompareOptions relative_only;
+  relative_only.default_tolerance = {1e-3, 0.0, 0.0};
+  CHECK_FALSE(compare_tables(sine_table(0.1), shifted, relative_only).pass());
+  CHECK_FALSE(compare_tables(sine_table(0.1), sine_table(0.1, 1.01), {}).pass());
+}
+
+TEST_CASE("compare over a window, by statistics, through aliases", "[unit][compare]") {
+  auto test = sine_table(0.1);
+  for (std::size_t i = 0; i < test.rows(); ++i)
+    if (test.time()[i] < 2.0) test.columns[2][i] += 100.0;  // a start-up transient
+  CompareOptions windowed;
+  windowed.window = std::pair(2.0, 10.0);
+  const ComparisonReport w = compare_tables(sine_table(0.1), test, windowed);
+  CHECK(w.pass());
+  CHECK(w.t_start_s == 2.0);
+  CHECK_FALSE(compare_tables(sine_table(0.1), test, {}).pass());
+  // Statistics: B scaled by 1.01 moves every statistic by 1 %: passes 2 %, fails 0.5 %.
+  CompareOptions stats;
+  stats.statistics = true;
+  stats.default_tolerance = {0.02, 0.0, 0.0};
+  const ComparisonReport s = compare_tables(sine_table(0.1), sine_table(0.1, 1.01), stats);
+  CHECK(s.pass());
+  CHECK(s.channels[1].test_statistics[0] == Approx(1.01 * s.channels[1].reference_statistics[0]));
+  stats.default_tolerance = {0.005, 0.0, 0.0};
+  CHECK_FALSE(compare_tables(sine_table(0.1), sine_table(0.1, 1.01), stats).pass());
+  // Aliases: the test calls B "T[1]".
+  auto renamed = sine_table(0.1);
+  renamed.names[2] = "T[1]";
+  CompareOptions aliased;
+  aliased.aliases["B"] = "T[1]";
+  const ComparisonReport a = compare_tables(sine_table(0.1), renamed, aliased);
+  CHECK(a.channels.size() == 2);
+  CHECK(a.pass());
+}
+
+TEST_CASE("a required channel missing is reported once, and --channels reports only those", "[unit][compare]") {
+  auto test = sine_table(0.1);
+  test.names.push_back("Extra");
+  test.units.push_back("-");
+  test.columns.push_back(test.columns[1]);
+  CompareOptions options;
+  options.channels = {"A", "Nowhere"};
+  const ComparisonReport r = compare_tables(sine_table(0.1), test, options);
+  CHECK(r.required_missing_names == std::vector<std::string>{"Nowhere"});
+  CHECK(r.missing_in_test.empty());
+  CHECK(r.missing_in_reference.empty());  // "Extra" was not asked for
+  CHECK_FALSE(r.pass());
+}
+
+TEST_CASE("a constant reference channel has no ratio, and says so", "[unit][compare]") {
+  auto t = sine_table(0.1);
+  for (double& b : t.columns[2]) b = 3.0;
+  const ComparisonReport r = compare_tables(t, t, {});
+  CHECK(r.channels[1].constant_reference);
+  CHECK(r.pass());
+}

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -42,19 +43,42 @@ double correlation(const std::vector<double>& a, const std::vector<double>& b) {
   return (saa > 0 && sbb > 0) ? sab / std::sqrt(saa * sbb) : kNaN;
 }
 
+double standard_deviation(const std::vector<double>& v) {
+  const double m = statistics(v).mean;
+  double s = 0.0;
+  for (double x : v) s += (x - m) * (x - m);
+  return std::sqrt(s / static_cast<double>(v.size()));
+}
+
 ChannelComparison compare_channel(const std::string& name, const std::string& unit, const std::vector<double>& ref,
                                   const std::vector<double>& test, const std::vector<double>& time,
-                                  ChannelTolerance tol) {
+                                  ChannelTolerance tol, bool compare_statistics) {
   ChannelComparison c;
   c.name = name;
   c.unit = unit;
   c.tolerance = tol;
   c.worst_excess = -std::numeric_limits<double>::infinity();
+  const Statistics sr0 = statistics(ref), st0 = statistics(test);
+  c.constant_reference = !(sr0.max > sr0.min);
+  const double atol = tol.atol + tol.range_atol * (sr0.max - sr0.min);
+  if (compare_statistics) {
+    c.reference_statistics = {sr0.mean, standard_deviation(ref), sr0.min, sr0.max};
+    c.test_statistics = {st0.mean, standard_deviation(test), st0.min, st0.max};
+    for (std::size_t k = 0; k < 4; ++k) {
+      const double e = c.test_statistics[k] - c.reference_statistics[k];
+      const double excess = std::isfinite(e) ? std::abs(e) - (atol + tol.rtol * std::abs(c.reference_statistics[k]))
+                                             : std::numeric_limits<double>::infinity();
+      c.worst_excess = std::max(c.worst_excess, excess);
+      c.max_abs_error = std::max(c.max_abs_error, std::abs(e));
+    }
+    c.pass = c.worst_excess <= 0.0;
+    return c;
+  }
   std::vector<double> error(ref.size());
   for (std::size_t i = 0; i < ref.size(); ++i) {
     error[i] = test[i] - ref[i];
     // A NaN in either file must fail: NaN comparisons are false, so test for it explicitly.
-    const double excess = std::isfinite(error[i]) ? std::abs(error[i]) - (tol.atol + tol.rtol * std::abs(ref[i]))
+    const double excess = std::isfinite(error[i]) ? std::abs(error[i]) - (atol + tol.rtol * std::abs(ref[i]))
                                                   : std::numeric_limits<double>::infinity();
     if (excess > c.worst_excess) {
       c.worst_excess = excess;
@@ -86,6 +110,11 @@ ComparisonReport compare_tables(const io::ChannelTable& reference, const io::Cha
   require_strictly_increasing(tt, "test Time");
   report.t_start_s = std::max(tr.front(), tt.front());
   report.t_end_s = std::min(tr.back(), tt.back());
+  report.statistics = options.statistics;
+  if (options.window) {
+    report.t_start_s = std::max(report.t_start_s, options.window->first);
+    report.t_end_s = std::min(report.t_end_s, options.window->second);
+  }
   // Reference samples inside the common window (1e-9 s slack for printed time values).
   std::vector<std::size_t> rows;
   std::vector<double> time;
@@ -105,17 +134,30 @@ ComparisonReport compare_tables(const io::ChannelTable& reference, const io::Cha
   std::vector<std::string> wanted = options.channels;
   const bool explicit_list = !wanted.empty();
   if (!explicit_list) wanted.assign(reference.names.begin() + 1, reference.names.end());
-  for (std::size_t c = 1; c < test.names.size(); ++c) {
-    if (!reference.find(test.names[c])) report.missing_in_reference.push_back(test.names[c]);
-  }
+  // A channel's name in the other file: itself, or its alias either way round.
+  auto find_as = [&](const io::ChannelTable& table, const std::string& name) -> std::optional<std::size_t> {
+    if (const auto i = table.find(name)) return i;
+    if (const auto it = options.aliases.find(name); it != options.aliases.end()) return table.find(it->second);
+    for (const auto& [a, b] : options.aliases)
+      if (b == name) return table.find(a);
+    return std::nullopt;
+  };
+  if (!explicit_list)  // with --channels only those are reported
+    for (std::size_t c = 1; c < test.names.size(); ++c) {
+      if (!find_as(reference, test.names[c])) report.missing_in_reference.push_back(test.names[c]);
+    }
 
   std::vector<double> ref_values(rows.size()), test_values(rows.size());
   for (const std::string& name : wanted) {
-    const auto rc = reference.find(name), tc = test.find(name);
+    const auto rc = find_as(reference, name), tc = find_as(test, name);
     if (!rc || !tc) {
-      if (!tc) report.missing_in_test.push_back(name);
-      if (!rc) report.missing_in_reference.push_back(name);
-      if (explicit_list) report.required_missing = true;
+      if (explicit_list) {
+        report.required_missing = true;
+        report.required_missing_names.push_back(name);  // once, whichever file lacks it
+      } else {
+        if (!tc) report.missing_in_test.push_back(name);
+        if (!rc) report.missing_in_reference.push_back(name);
+      }
       continue;
     }
     for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -124,7 +166,7 @@ ComparisonReport compare_tables(const io::ChannelTable& reference, const io::Cha
     }
     const auto it = options.tolerances.find(name);
     const ChannelTolerance tol = it != options.tolerances.end() ? it->second : options.default_tolerance;
-    report.channels.push_back(compare_channel(name, reference.units[*rc], ref_values, test_values, time, tol));
+    report.channels.push_back(compare_channel(name, reference.units[*rc], ref_values, test_values, time, tol, options.statistics));
   }
   if (report.channels.empty() && !report.required_missing) {
     throw InputError({"compare", {}, "", "use --channels to pick channels present in both files"},

@@ -11,6 +11,7 @@ io::Schema tolerance_schema() {
   return Schema::map({
       {"rtol", Schema::number().at_least(0.0).default_value(1e-6).doc("relative tolerance")},
       {"atol", Schema::number().at_least(0.0).default_value(1e-9).doc("absolute tolerance, channel unit")},
+      {"range_atol", Schema::number().at_least(0.0).default_value(0.0).doc("absolute tolerance per unit of the channel's range")},
   });
 }
 
@@ -19,11 +20,12 @@ io::Schema tolerance_file_schema() {
   return Schema::map({
       {"default", tolerance_schema().optional().doc("tolerance of channels not listed")},
       {"channels", Schema::map_of(tolerance_schema()).optional().doc("per-channel tolerances; listed = required")},
+      {"aliases", Schema::map_of(Schema::string()).optional().doc("a channel's name in the other file (FAIRTEN1: T[1])")},
   });
 }
 
 ChannelTolerance read_tolerance(const io::ValidatedDeck& deck) {
-  return {deck.number("rtol"), deck.number("atol")};
+  return {deck.number("rtol"), deck.number("atol"), deck.number("range_atol")};
 }
 
 }  // namespace
@@ -38,6 +40,10 @@ CompareOptions load_tolerance_file(const std::string& path) {
       options.tolerances[name] = read_tolerance(channels.section(name));
       options.channels.push_back(name);
     }
+  }
+  if (deck.has("aliases")) {
+    const io::ValidatedDeck aliases = deck.section("aliases");
+    for (const std::string& name : aliases.keys("")) options.aliases[name] = aliases.string(name);
   }
   return options;
 }
