@@ -494,3 +494,17 @@ TEST_CASE("verify: a case without reference data is SKIPPED and nothing run is n
   mixed.rows.push_back({"coupling", "metric 2", 3.0, "< 2", "analytic", false});
   CHECK(mixed.exit_code() == 1);
 }
+
+TEST_CASE("fowtsim turbulence on a turbine deck uses its wind section", "[unit][run]") {
+  const auto dir = testing::scratch_dir("guard_turbulence_turbine");
+  const auto turbine = testing::source_dir() / "inputs/oc3_hywind/free_decay_pitch.yaml";
+  std::ofstream(dir / "turbine.yaml") << "include: [" << turbine.string() << "]\n"
+                                      << "wind: {model: turbulent, speed_m_s: 12.0, reference_height_m: 90.0,\n"
+                                      << "  turbulence: {ny: 4, nz: 4, width_m: 40.0, height_m: 40.0, dt_s: 0.5, duration_s: 20.0, seed: 7}}\n";
+  std::FILE* sink = std::tmpfile();
+  CHECK(run_turbulence_command(dir / "turbine.yaml", dir / "tb", sink) == 0);
+  CHECK(std::filesystem::exists(dir / "tb.bts"));
+  // A deck without a wind section says what is missing.
+  CHECK_THROWS_AS(run_turbulence_command(turbine, dir / "none", sink), InputError);
+  std::fclose(sink);
+}

@@ -24,7 +24,10 @@ io::TurbSimField to_turbsim(const wind::FullField& f, const std::string& descrip
 }  // namespace
 
 int run_turbulence_command(const std::filesystem::path& deck_path, const std::optional<std::filesystem::path>& base_in, std::FILE* out) {
-  const io::ValidatedDeck deck = io::read_deck(io::Schema::map({{"wind", wind_schema()}}), deck_path);
+  // A wind deck, or any deck with a `wind:` section (a turbine deck): only that section is read.
+  io::LoadedDeck loaded = io::load_deck(deck_path);
+  std::erase_if(loaded.root.entries, [](const io::DeckEntry& e) { return e.key != "wind"; });
+  const io::ValidatedDeck deck = io::validate(io::Schema::map({{"wind", wind_schema()}}), std::move(loaded));
   const wind::WindParams params = wind_params(deck.section("wind"));
   if (params.model != wind::WindModel::turbulent)
     throw InputError({"wind", std::nullopt, "wind.model", "turbulent"}, deck_path.string() + ": wind.model must be turbulent to generate a field");
