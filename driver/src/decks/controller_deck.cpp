@@ -47,7 +47,10 @@ ControllerParams controller_params(const io::ValidatedDeck& c) {
         throw InputError({"control", std::nullopt, "controller.library", "a DISCON library path"}, "type discon needs `library`");
       control::ExternalSettings s;
       const std::filesystem::path lib = c.string("library");
-      s.library_path = (lib.is_absolute() ? lib : std::filesystem::path(c.location("library").file).parent_path() / lib).string();
+      // Relative to the deck file, made absolute: a bare `libX.so` must not go to the system search path.
+      s.library_path = std::filesystem::absolute(lib.is_absolute() ? lib : std::filesystem::path(c.location("library").file).parent_path() / lib)
+                           .lexically_normal()
+                           .string();
       s.procedure = c.string("procedure");
       s.infile = c.string("infile");
       s.min_pitch_rad = c.number("min_pitch_rad");

@@ -67,7 +67,7 @@ ShaftMotion shaft_motion(const multibody::ChainKinematics& chain, const multibod
   s.orientation = chain.shaft.orientation;
   s.angular_velocity_rad_s = chain.shaft.angular_velocity_rad_s;
   s.angular_acceleration_rad_s2 = multibody::angular_acceleration(chain.shaft, udot);
-  s.tower_base_m = chain.reference.position_m;
+  s.tower_base_m = multibody::tower_axis_at_sea_level(chain);
   s.tower_axis = chain.base.orientation.col(2);
   return s;
 }

@@ -46,7 +46,7 @@ void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, doub
   input_.rotor_speed_rad_s = rotor_speed_rad_s;
   input_.blade_pitch_rad.setConstant(pitch_rad);
   input_.time_s = t;
-  input_.tower_base_position_m = chain.reference.position_m;
+  input_.tower_base_position_m = multibody::tower_axis_at_sea_level(chain);
   input_.tower_axis = chain.base.orientation.col(2);
   for (std::size_t k = 0; k < points_.size(); ++k) {
     const auto c = static_cast<Eigen::Index>(k);

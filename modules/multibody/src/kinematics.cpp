@@ -116,6 +116,12 @@ void chain_kinematics(const Model& model, const State& state, ChainKinematics& o
   }
 }
 
+Vec3 tower_axis_at_sea_level(const ChainKinematics& chain) {
+  const Vec3 axis = chain.base.orientation.col(2);
+  const Vec3& base = chain.tower_base.position_m;
+  return std::abs(axis.z()) > 1e-9 ? Vec3(base - (base.z() / axis.z()) * axis) : base;
+}
+
 FrameMotion frame_motion(const PointKinematics& p, const RotationKinematics& body,
                          const Mat3& orientation, const GeneralisedVector& udot) {
   FrameMotion m;

@@ -10,6 +10,7 @@
 #include "fowtsim/core/rotation.hpp"
 #include "fowtsim/multibody/dynamics.hpp"
 #include "fowtsim/multibody/kinematics.hpp"
+#include "fowtsim/multibody/multibody.hpp"
 #include "fowtsim/multibody/oc3.hpp"
 
 using namespace fowtsim;
@@ -158,4 +159,19 @@ TEST_CASE("generator angular velocity is N times the generator speed about the s
   // The upwind end of the shaft is raised (ElastoDyn ShftTilt < 0): x_s points down-wind and down.
   CHECK(e_s.x() > 0.0);
   CHECK(e_s.z() < 0.0);
+}
+
+TEST_CASE("the tower axis crosses sea level where tower influence needs it, wherever the reference point is", "[unit][multibody]") {
+  Params p = oc3_hywind_params();
+  p.platform.reference_height_m = 10.0;  // reference point above SWL: not on the waterline
+  p.initial_conditions.platform_angles_deg = Vec3(3.0, 8.0, 20.0);
+  p.initial_conditions.platform_position_m = Vec3(5.0, -2.0, 1.0);
+  const Model model = make_model(p);
+  ChainKinematics chain;
+  chain_kinematics(model, Multibody::make_state(model), chain);
+  const Vec3 at_sea_level = tower_axis_at_sea_level(chain);
+  CHECK(std::abs(at_sea_level.z()) < 1e-12);
+  // On the axis through the tower base along z_b: the offset is parallel to the axis.
+  const Vec3 offset = chain.tower_base.position_m - at_sea_level;
+  CHECK(offset.cross(chain.base.orientation.col(2)).norm() < 1e-9 * offset.norm());
 }

@@ -58,6 +58,11 @@ GeneralisedVector generalised_velocities(const Model& model, const State& state)
 // Positions, velocities, Jacobians and bias accelerations of the whole chain. Allocates nothing.
 void chain_kinematics(const Model& model, const State& state, ChainKinematics& out);
 
+// The point where the tower axis (through the tower base, along z_b) crosses elevation 0 in g —
+// what aerodynamic tower-influence models take as the tower's origin; the platform reference
+// point only when that lies at elevation 0.
+Vec3 tower_axis_at_sea_level(const ChainKinematics& chain);
+
 // The point on body `body` at `position_m` (g), with body's reference point `origin`.
 PointKinematics point_on(const PointKinematics& origin, const RotationKinematics& body,
                          const Vec3& position_m);
