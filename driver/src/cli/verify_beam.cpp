@@ -223,6 +223,8 @@ void bench_beam(std::FILE* out) {
                               {"gen-α, A each step", beam::Integrator::generalized_alpha, 1},
                               {"ARKODE DP5(4)", beam::Integrator::erk, std::nullopt}};
   fmt::print(out, "NREL 5MW blade at 12.1 rpm under gravity, Δt = 0.005 s, 300 s; error vs BeamDyn over 120–300 s\n");
+  fmt::print(out, "(slow: the ARKODE rows take about 12 minutes on this machine, the 49-element one most of it)\n");
+  std::fflush(out);
   fmt::print(out, "{:<18} {:>4} {:>9} {:>10} {:>10} {:>12} {:>10} {:>9} {:>9}\n", "integrator", "el.", "run [s]", "run µs/st",
              "run × rt", "step µs/st", "step × rt", "edge err", "flap err");
   for (const Variant& v : variants) {
