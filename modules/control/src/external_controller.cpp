@@ -54,7 +54,9 @@ void fill_constant_records(const External::Params& p, External::State& s) {
   record(s, swap::swap_size) = static_cast<float>(kSwapSize);
 }
 
-// Calls the procedure with status `status` at time t; throws NumericalError when aviFAIL < 0.
+// Calls the procedure with status `status` at time t. aviFAIL < 0 on the first call (status 0) is
+// the controller rejecting its input (InputError: bad input, exit 2); later it is a failure
+// during the run (NumericalError).
 void call(const External::Params& p, int status, double t, External::State& s) {
   record(s, swap::status) = static_cast<float>(status);
   record(s, swap::time) = static_cast<float>(t);
@@ -65,6 +67,11 @@ void call(const External::Params& p, int status, double t, External::State& s) {
   s.last_fail = fail;
   ++s.calls;
   s.last_call_time_s = t;
+  if (fail < 0 && status == 0) {
+    throw InputError({"control.dll", t, "aviFAIL", "check the controller's input file (controller.infile)"},
+                     fmt::format("external controller '{}' rejected its input at its first call (aviFAIL = {}): {}",
+                                 p.library->path(), fail, message_text(s)));
+  }
   if (fail < 0) {
     throw NumericalError({"control.dll", t, "aviFAIL", "see the controller's message; check its parameter file"},
                          fmt::format("external controller '{}' failed at t = {} s (aviFAIL = {}): {}",

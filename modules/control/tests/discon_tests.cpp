@@ -145,8 +145,9 @@ TEST_CASE("swap records sent to the DLL", "[unit][control]") {
 }
 
 TEST_CASE("DLL errors: missing library, missing procedure, aviFAIL < 0", "[unit][control]") {
-  // Intent: issue 6 robustness — a clear InputError naming the path before the run; a failing
-  // controller becomes a NumericalError carrying its message.
+  // Intent: issue 6 robustness — a clear InputError naming the path before the run; a controller
+  // that rejects its input at its first call is bad input too (issue 16: exit 2, not 3), carrying
+  // its message.
   ExternalSettings missing = test_discon("oc3_hywind");
   missing.library_path = "/nonexistent/libno_discon.so";
   try {
@@ -169,8 +170,8 @@ TEST_CASE("DLL errors: missing library, missing procedure, aviFAIL < 0", "[unit]
   u.generator_speed_rad_s = 100.0;
   try {
     ExternalController::advance(ep, u, 0.0, 0.0125, s);
-    FAIL("no NumericalError for aviFAIL < 0");
-  } catch (const NumericalError& e) {
+    FAIL("no InputError for aviFAIL < 0 at the first call");
+  } catch (const InputError& e) {
     CHECK_THAT(e.what(), Catch::Contains("unknown parameter set 'no_such_set'"));
     CHECK(e.context().variable == "aviFAIL");
     REQUIRE(e.context().time_s.has_value());
