@@ -55,6 +55,12 @@ int run_turbulence_command(const std::filesystem::path& deck_path, const std::op
   fmt::print(out, "  frequencies      {} ({} dense Cholesky, {} circulant embedding, {} independent: dropped coherence ≤ {:.1e})\n",
              g.stats.frequencies, g.stats.dense_frequencies, g.stats.embedding_frequencies, g.stats.independent_frequencies,
              g.stats.max_dropped_coherence);
+  if (g.field.n_tower > 0)
+    fmt::print(out, "  tower points     {} at y = 0, z = {:.2f} … {:.2f} m (TurbSim's column; u drawn given the grid: {} frequencies, {} independent)\n",
+               g.field.n_tower, g.field.z_bottom_m, g.field.z_bottom_m - (g.field.n_tower - 1) * g.field.dz_m,
+               g.stats.tower_conditional_frequencies, g.stats.tower_independent_frequencies);
+  else
+    fmt::print(out, "  tower points     none (no TurbSim tower point fits between the grid bottom {:.2f} m and the ground)\n", g.field.z_bottom_m);
   fmt::print(out, "  wall time        {:.2f} s\n  output           {}.bts, {}.h5\n", generate_s, base.string(), base.string());
   return 0;
 }

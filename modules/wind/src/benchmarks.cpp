@@ -49,6 +49,16 @@ std::vector<WindBenchRow> bench_wind(double duration_fraction, int lookups) {
   p.turbulence.seed = 13428;
 
   std::vector<WindBenchRow> rows;
+  {  // the same field without TurbSim's tower points (grid bit-identical): the tower's cost by difference
+    WindParams bare = p;
+    bare.turbulence.tower_points = false;
+    const std::clock_t cpu_start = std::clock();
+    const auto start = std::chrono::steady_clock::now();
+    const GeneratedTurbulence g = generate_turbulence(bare);
+    const double wall = seconds_since(start);
+    const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    rows.push_back({"generate 31x31 without tower points", wall, cpu, 0.0, "grid only (TurbulenceParams::tower_points = false)"});
+  }
   const std::clock_t cpu_start = std::clock();
   const auto start = std::chrono::steady_clock::now();
   GeneratedTurbulence generated = generate_turbulence(p);
@@ -60,7 +70,9 @@ std::vector<WindBenchRow> bench_wind(double duration_fraction, int lookups) {
                   std::to_string(s.frequencies) + " frequencies: " + std::to_string(s.dense_frequencies) +
                       " dense Cholesky, " + std::to_string(s.embedding_frequencies) + " circulant embedding, " +
                       std::to_string(s.independent_frequencies) + " independent (max dropped coherence " +
-                      std::to_string(s.max_dropped_coherence) + ")"});
+                      std::to_string(s.max_dropped_coherence) + "); " + std::to_string(generated.field.n_tower) +
+                      " tower points: " + std::to_string(s.tower_conditional_frequencies) + " conditional on the grid, " +
+                      std::to_string(s.tower_independent_frequencies) + " independent"});
 
   const WindField turbulent(p, std::make_shared<const FullField>(std::move(generated.field)));
   rows.push_back(time_lookups(turbulent, "lookup in the full field (bilinear y-z, linear t)", lookups));

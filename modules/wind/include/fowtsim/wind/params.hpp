@@ -39,6 +39,7 @@ struct TurbulenceParams {
   double dt_s = 0.05;            // time step of the field [s]
   double duration_s = 630.0;     // length of the (periodic) record [s]
   std::uint64_t seed = 1;        // seed of std::mt19937_64 [-]
+  bool tower_points = true;      // also generate TurbSim's tower column below the grid (API only, no deck key)
 };
 
 struct WindParams {

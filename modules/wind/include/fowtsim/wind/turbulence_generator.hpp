@@ -15,6 +15,12 @@
 // Random numbers: std::mt19937_64(seed); a phase is θ = 2π (g() >> 11)·2⁻⁵³ (our own uniform
 // conversion, so the field is bit-identical on every platform with the same libm). Draw order:
 // component u, v, w; frequency m ascending; then the sampler's draws (u) or points j ascending (v, w).
+//
+// Tower points (TurbulenceParams::tower_points, default on): TurbSim's column below the grid at y = 0
+// (TowerSampler: layout, and u drawn jointly with the grid, conditionally on it, exact second
+// moments), the same Kaimal spectra and mean profile U(z) at their heights, v and w independent. Their
+// phasors come from a second stream std::mt19937_64(seed + 0x9E3779B97F4A7C15) in the same order, so
+// the grid is bit-identical with and without tower points.
 #include <cstdint>
 #include <random>
 
@@ -35,11 +41,13 @@ struct TurbulenceStats {
   int independent_frequencies = 0;           // u frequencies with coherence dropped (< 1e-4)
   int embedding_frequencies = 0;             // u frequencies by circulant embedding (exact)
   int dense_frequencies = 0;                 // u frequencies by dense Cholesky (exact)
-  double max_dropped_coherence = 0.0;        // largest coherence replaced by 0 [-]
+  double max_dropped_coherence = 0.0;        // largest coherence replaced by 0 [-] (grid and tower)
+  int tower_conditional_frequencies = 0;     // u frequencies with the tower drawn given the grid (exact)
+  int tower_independent_frequencies = 0;     // u frequencies with the tower's coherences dropped (< 1e-4)
 };
 
 struct GeneratedTurbulence {
-  FullField field;        // periodic grid centred on (y = 0, z = reference_height_m), no tower points
+  FullField field;        // periodic grid centred on (y = 0, z = reference_height_m) and TurbSim's tower points
   TurbulenceStats stats;
 };
 
