@@ -192,6 +192,16 @@ class Loader {
     DeckNode node;
     node.path = path;
     node.location = fallback;
+    // YAML aliases can expand a small file without bound (a "billion laughs" deck grew to 24 GB):
+    // stop at a node count no real deck comes near.
+    if (++nodes_ > kMaxNodes) {
+      if (!too_large_)
+        add({DeckIssueKind::yaml_syntax, location_of(yaml, file, fallback), path,
+             fmt::format("the deck expands to more than {} values (nested YAML aliases?)", kMaxNodes),
+             "a deck of ordinary size", "write the values out instead of aliasing aliases"});
+      too_large_ = true;
+      return node;
+    }
     if (yaml.IsNull()) return node;
     node.location = location_of(yaml, file, fallback);
     if (yaml.IsScalar()) {
@@ -281,6 +291,9 @@ class Loader {
   std::map<fs::path, std::string> bytes_;  // canonical path -> file bytes
   std::vector<fs::path> files_;            // files read, in load order
   std::uint64_t hash_ = fnv1a_64_offset;   // FNV-1a over files_ so far
+  static constexpr std::size_t kMaxNodes = 2'000'000;  // values in the whole deck, aliases expanded
+  std::size_t nodes_ = 0;
+  bool too_large_ = false;
 };
 
 }  // namespace

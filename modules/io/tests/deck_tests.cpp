@@ -1,6 +1,7 @@
 // Loading YAML decks into DeckNode trees: source locations, include merging, load errors and
 // the deck hash.
 #include <catch2/catch.hpp>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -275,4 +276,25 @@ TEST_CASE("the deck hash covers included files and changes when one changes", "[
 
   write(dir / "turbine.yaml", "radius_m: 64\n");
   CHECK(load_deck(scene).hash != before.hash);
+}
+
+TEST_CASE("a deck whose YAML aliases expand without bound stops with a clear error", "[unit][io]") {
+  // Ten aliases of ten aliases … eleven deep: 10^12 values from a few hundred bytes.
+  const auto dir = std::filesystem::temp_directory_path() / "fowtsim_alias_bomb";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream f(dir / "bomb.yaml");
+    f << "a0: &a0 [1,1,1,1,1,1,1,1,1,1]\n";
+    for (int i = 1; i < 12; ++i) {
+      f << "a" << i << ": &a" << i << " [";
+      for (int k = 0; k < 10; ++k) f << (k ? "," : "") << "*a" << i - 1;
+      f << "]\n";
+    }
+  }
+  try {
+    fowtsim::io::load_deck(dir / "bomb.yaml");
+    FAIL("no error for an alias bomb");
+  } catch (const DeckError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("nested YAML aliases"));
+  }
 }
