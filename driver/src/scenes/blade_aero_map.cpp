@@ -19,6 +19,8 @@ BladeAeroMap::BladeAeroMap(const aero::Params& aero_params, const beam::BeamMode
   station_s_.push_back(0.0);
   for (const beam::NodeModel& node : blade.nodes) station_s_.push_back(node.s_m);
   station_s_.push_back(blade.length_m);
+  node_deformation_.resize(static_cast<std::size_t>(n));
+  node_quaternion_.resize(static_cast<std::size_t>(n));
 
   // The undeformed aero nodes of blade 1 in f from the rigid-rotor placement (hub at the origin,
   // h = identity, ψ = 0, zero pitch): position and airfoil frame in h, taken into the coned root
@@ -103,19 +105,22 @@ Vec3 BladeAeroMap::velocity(const beam::BeamState& state, const Along& a) const 
   return at(a.lower) + a.fraction * (at(a.lower + 1) - at(a.lower));
 }
 
-Mat3 BladeAeroMap::deformation(const beam::BeamState& state, const Along& a) const {
+void BladeAeroMap::node_deformations(const beam::BeamState& state) const {
+  for (int n = 0; n < blade_.node_count(); ++n) {
+    node_deformation_[n] = state.orientation[n] * blade_.nodes[n].orientation.transpose();
+    node_quaternion_[n] = Eigen::Quaterniond(node_deformation_[n]);
+  }
+}
+
+Mat3 BladeAeroMap::deformation(const Along& a) const {
   const int n = blade_.node_count();
-  auto at = [&](int i) -> Mat3 {
-    if (i < 0) return Mat3::Identity();  // the clamped root does not deform
-    const int j = std::min(i, n - 1);     // the tip moves rigidly with the last node
-    return state.orientation[j] * blade_.nodes[j].orientation.transpose();
-  };
-  const Mat3 lo = at(a.lower);
-  if (a.fraction == 0.0) return lo;
+  // The clamped root does not deform; the tip moves rigidly with the last node.
+  auto quaternion = [&](int i) { return i < 0 ? Eigen::Quaterniond::Identity() : node_quaternion_[std::min(i, n - 1)]; };
+  if (a.fraction == 0.0) return a.lower < 0 ? Mat3::Identity() : node_deformation_[std::min(a.lower, n - 1)];
   // Normalised linear blend of the two quaternions: the geodesic to O(θ²) of the small relative
   // rotation between neighbouring stations (below 1e-4 rad of error for 0.01 rad between them),
   // without the trigonometry of log and exp at every aero node and step.
-  const Eigen::Quaterniond q_lo(lo), q_hi(at(a.lower + 1));
+  const Eigen::Quaterniond q_lo = quaternion(a.lower), q_hi = quaternion(a.lower + 1);
   const double sign = q_lo.dot(q_hi) < 0.0 ? -1.0 : 1.0;
   Eigen::Quaterniond q;
   q.coeffs() = (1.0 - a.fraction) * q_lo.coeffs() + (sign * a.fraction) * q_hi.coeffs();
@@ -125,10 +130,11 @@ Mat3 BladeAeroMap::deformation(const beam::BeamState& state, const Along& a) con
 void BladeAeroMap::place(int b, const BladeFrame& frame, const beam::BeamState& state, aero::Aero::Input& input) const {
   const int count = nodes_per_blade();
   const Mat3& t_gf = frame.orientation;
+  node_deformations(state);
   for (int k = 0; k < count; ++k) {
     const AeroNode& a = aero_nodes_[k];
     const auto c = static_cast<Eigen::Index>(b * count + k);
-    const Mat3 d = deformation(state, a.at);
+    const Mat3 d = deformation(a.at);
     const Vec3 p_f = position(state, a.at) + d * a.offset_m;
     const Vec3 r = t_gf * p_f;
     input.node_position_m.col(c) = frame.root_m + r;
@@ -142,6 +148,7 @@ void BladeAeroMap::distribute(int b, const BladeFrame& frame, const beam::BeamSt
                               const aero::Aero::Output& output, std::vector<Vec6>& node_loads) const {
   const int count = nodes_per_blade();
   const Mat3 t_fg = frame.orientation.transpose();
+  node_deformations(state);
   for (Vec6& l : node_loads) l.setZero();
   for (const QuadraturePoint& q : quadrature_) {
     const auto c0 = static_cast<Eigen::Index>(b * count + q.aero_lower);
@@ -151,8 +158,7 @@ void BladeAeroMap::distribute(int b, const BladeFrame& frame, const beam::BeamSt
     const AeroNode& lo = aero_nodes_[q.aero_lower];
     const AeroNode& hi = aero_nodes_[q.aero_lower + 1];
     const int n = q.segment;
-    const Mat3 d = state.orientation[n] * blade_.nodes[n].orientation.transpose();
-    const Vec3 arm = position(state, q.at) + d * ((1.0 - x) * lo.offset_m + x * hi.offset_m) - state.position_m[n];
+    const Vec3 arm = position(state, q.at) + node_deformation_[n] * ((1.0 - x) * lo.offset_m + x * hi.offset_m) - state.position_m[n];
     node_loads[n].head<3>() += q.weight_m * f;
     node_loads[n].tail<3>() += q.weight_m * (m + arm.cross(f));
   }

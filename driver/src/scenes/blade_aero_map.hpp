@@ -15,6 +15,8 @@
 // rotation of ≤ 0.6 m offsets by the pitch angle). Spans are measured along the beam's arclength.
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "fowtsim/aero/aero.hpp"
 #include "fowtsim/beam/beam_model.hpp"
 #include "fowtsim/beam/beam_state.hpp"
@@ -59,13 +61,18 @@ class BladeAeroMap {
   };
   Vec3 position(const beam::BeamState& state, const Along& a) const;
   Vec3 velocity(const beam::BeamState& state, const Along& a) const;
-  Mat3 deformation(const beam::BeamState& state, const Along& a) const;  // R R0ᵀ
+  // The deformation rotation R R0ᵀ of every node of a state, as matrices and quaternions, once
+  // per call of place/distribute (workspace: sized at construction, no allocation).
+  void node_deformations(const beam::BeamState& state) const;
+  Mat3 deformation(const Along& a) const;  // interpolated from node_deformations()
   Along along(double s) const;
 
   const beam::BeamModel& blade_;
   std::vector<double> station_s_;          // arclength of root, nodes, tip
   std::vector<AeroNode> aero_nodes_;
   std::vector<QuadraturePoint> quadrature_;
+  mutable std::vector<Mat3> node_deformation_;
+  mutable std::vector<Eigen::Quaterniond> node_quaternion_;
 };
 
 }  // namespace fowtsim::driver
