@@ -19,7 +19,6 @@
 // the aero module's airfoil frame T_ga = T_gb R_z(−(twist + β))).
 #include <array>
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include "fowtsim/beam/beam_model.hpp"
@@ -151,7 +150,6 @@ class FlexibleRotor {
 
  private:
   void evaluate_aero(double t, const ShaftMotion& shaft, bool solve_induction = true);
-  void fill_inputs(const ShaftMotion& shaft, const RotorDemands& demands);
   void step(double t, double dt, const ShaftMotion& shaft, const RotorDemands& demands, bool solve_induction);
   void advance_pitch(double dt, double command);
   HubLoad root_loads(const ShaftMotion& shaft) const;

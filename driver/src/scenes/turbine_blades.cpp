@@ -18,7 +18,7 @@ using io::Schema;
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 }  // namespace
 
@@ -95,7 +95,7 @@ TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Mod
     : model_(model),
       params_(rotor_params(deck, model)),
       map_(aero ? std::optional<BladeAeroMap>(std::in_place, aero->params(), params_.blade,
-                                              -model.params.rotor.precone_deg / kDeg, model.params.rotor.hub_radius_m)
+                                              -model.params.rotor.precone_deg / kRadToDeg, model.params.rotor.hub_radius_m)
                 : std::nullopt),
       rotor_(params_, aero, map_ ? &*map_ : nullptr) {
   const io::ValidatedDeck b = deck.section("blades");
@@ -284,15 +284,15 @@ void TurbineBlades::channel_values(std::span<double> out) const {
     const beam::BeamModel& model = rotor_.params().blade;
     const beam::BeamState& s = st.blades[b];
     const Vec3 tip_rotation = rotation_vector(s.orientation.back() * model.nodes.back().orientation.transpose());
-    for (int i = 0; i < 3; ++i) out[k++] = tip_rotation[i] * kDeg;
+    for (int i = 0; i < 3; ++i) out[k++] = tip_rotation[i] * kRadToDeg;
     const Vec3 d_c = t_cf * o.tip_displacement_m;
     out[k++] = d_c.x();
     out[k++] = d_c.y();
-    out[k++] = -tip_rotation.z() * kDeg;  // pitch toward feather turns f by −β about z
+    out[k++] = -tip_rotation.z() * kRadToDeg;  // pitch toward feather turns f by −β about z
     for (int i = 0; i < 3; ++i) out[k++] = root[i];
     for (int i = 0; i < 3; ++i) out[k++] = root[3 + i];
     for (int i = 0; i < 3; ++i) out[k++] = o.tip_displacement_m[i];
-    out[k++] = st.pitch_rad[b] * kDeg;
+    out[k++] = st.pitch_rad[b] * kRadToDeg;
     for (const double eta : gauges_eta_) {
       const Vec6 load = beam::section_load_at(model, s, eta);
       for (int i = 0; i < 6; ++i) out[k++] = load[i] / 1e3;
