@@ -1,10 +1,12 @@
 #pragma once
-// The floating-turbine scene: the rigid multibody (platform + tower, nacelle, rotor with rigid
-// blades, drivetrain) under gravity, hydrodynamics, hydrostatics and mooring, in a sea. Hydro and
-// mooring are evaluated at every Runge–Kutta stage of the large step (their loads depend on the
-// pose), the hydro added mass goes to the left-hand side. Parked or free-spinning rotor without
-// aerodynamics (aero and the controller join with issue 4/6 follow-ups). The OC3-Hywind free-decay
-// decks (inputs/oc3_hywind/free_decay_*.yaml) are its verification cases.
+// The floating-turbine scene: the rigid multibody (platform + tower, nacelle, hub, drivetrain)
+// under gravity, hydrodynamics, hydrostatics and mooring in a sea (evaluated at every Runge–Kutta
+// stage of the large step; the hydro added mass on the left-hand side), with rigid blades and BEM
+// at every stage, or with three flexible MBBT blades, their aerodynamics and the rotor spin at the
+// small step (turbine_blades.hpp); the controller at the large step. Rows restore the solvers'
+// warm starts they move, so output decimation changes nothing; the scene's whole state can be
+// checkpointed (run/checkpoint.hpp). The OC3-Hywind decks in inputs/oc3_hywind and the seed's
+// cases in inputs/seed_cases are its verification and load cases.
 #include "fowtsim/io/schema.hpp"
 #include "run/run_types.hpp"
 
