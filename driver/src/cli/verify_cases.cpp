@@ -29,7 +29,7 @@ void bench_waves(std::FILE* out);
 
 std::vector<std::string> verification_case_names() {
   return {"coupling",         "beam-rollup", "beam-curved",        "beam-timestep", "beam-beamdyn",
-          "beam-frequencies", "sea",         "turbine-validation", "turbine-oc3"};
+          "beam-frequencies", "sea",         "free-decay",         "turbine-validation", "turbine-oc3"};
 }
 
 std::vector<VerificationRow> run_verification_case(const std::string& name, std::FILE* out) {
@@ -40,6 +40,7 @@ std::vector<VerificationRow> run_verification_case(const std::string& name, std:
   if (name == "beam-beamdyn") return verify_beam_beamdyn(out);
   if (name == "beam-frequencies") return verify_beam_frequencies(out);
   if (name == "sea") return verify_sea(out);
+  if (name == "free-decay") return verify_free_decay(out);
   if (name == "turbine-validation") return verify_turbine_validation(out);
   if (name == "turbine-oc3") return verify_turbine_oc3(out);
   std::string known;

@@ -1,5 +1,6 @@
 #include "cli/verify_turbine.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -52,7 +53,63 @@ VerificationRow correlation_row(const std::string& case_name, const PairedSeries
   return {case_name, fmt::format("{} correlation", what), c, fmt::format("> {:.5g}", limit), source, c > limit};
 }
 
+// Mean period between up-crossings of the signal about its mean over the second half (the level
+// it decays to), as the OpenFAST runs' README measures it; NaN with fewer than two crossings.
+double mean_period(const std::vector<double>& t, const std::vector<double>& x) {
+  const std::size_t half = x.size() / 2;
+  double level = 0.0;
+  for (std::size_t i = half; i < x.size(); ++i) level += x[i];
+  level /= static_cast<double>(x.size() - half);
+  std::vector<double> up;
+  for (std::size_t i = 1; i < x.size(); ++i)
+    if (x[i - 1] - level < 0.0 && x[i] - level >= 0.0)
+      up.push_back(t[i - 1] + (t[i] - t[i - 1]) * (level - x[i - 1]) / (x[i] - x[i - 1]));
+  if (up.size() < 2) return std::nan("");
+  return (up.back() - up.front()) / static_cast<double>(up.size() - 1);
+}
+
+VerificationRow below(const std::string& case_name, const std::string& metric, double value, double limit,
+                      const std::string& source) {
+  return {case_name, metric, value, fmt::format("< {:.3g}", limit), source, value < limit};
+}
+
 }  // namespace
+
+std::vector<VerificationRow> verify_free_decay(std::FILE* out) {
+  fmt::print(out, "OC3-Hywind free decay: rigid multibody, Morison hydro, nonlinear hydrostatics, catenary mooring\n");
+  const struct {
+    const char *name, *channel;
+    double published_hz;  // PUBLISHED.md, OC3-Hywind platform natural frequencies (TP-47266)
+  } cases[] = {{"surge", "PtfmSurge", 0.0080}, {"heave", "PtfmHeave", 0.0324}, {"pitch", "PtfmPitch", 0.0343}, {"yaw", "PtfmYaw", 0.1210}};
+  const auto runs = shared_dir() / "reference/openfast-runs/oc3_free_decay";
+  const std::string c = "free-decay";
+  std::vector<VerificationRow> rows;
+  for (const auto& d : cases) {
+    const io::ChannelTable ours =
+        run_deck(input(std::string("oc3_hywind/free_decay_") + d.name + ".yaml"), scratch("free-decay") / d.name);
+    const auto& x = ours.columns[ours.find(d.channel).value()];
+    const double period = mean_period(ours.time(), x);
+    // Issue 6: within 5 % of the published natural frequency. Measured: surge +1.1 %, heave
+    // −1.8 %, pitch +2.9 %, yaw −0.3 % (the published values are rounded to 2–3 digits).
+    rows.push_back(below(c, fmt::format("{} period {:.4g} s vs published {:.4g} s: rel. diff", d.name, period, 1.0 / d.published_hz),
+                         std::abs(period * d.published_hz - 1.0), 0.05, "PUBLISHED.md (TP-47266)"));
+    // A free decay: nothing grows beyond the initial displacement (5 % for the offset of the
+    // static equilibrium, e.g. the heave sink under the turbine weight).
+    double largest = 0.0;
+    for (double v : x) largest = std::max(largest, std::abs(v));
+    rows.push_back(below(c, fmt::format("{}: largest |x| / |x(0)|", d.name), largest / std::abs(x.front()), 1.05, "decay"));
+    const auto reference = runs / d.name / (std::string("oc3_decay_") + d.name + ".out");
+    if (!std::filesystem::exists(reference)) continue;
+    const io::ChannelTable theirs = io::read_channels(reference);
+    const double p_theirs = mean_period(theirs.time(), theirs.columns[theirs.find(d.channel).value()]);
+    // OpenFAST takes added mass and radiation damping from WAMIT potential flow, we from Morison
+    // strips with Ca = 1 (the runs' README: "compare periods to a few percent"): 3 %. Measured:
+    // surge +0.7 %, heave −1.7 %, pitch +1.8 %, yaw −0.03 %.
+    rows.push_back(below(c, fmt::format("{} period vs OpenFAST {:.4g} s: rel. diff", d.name, p_theirs),
+                         std::abs(period / p_theirs - 1.0), 0.03, "openfast-runs/oc3_free_decay"));
+  }
+  return rows;
+}
 
 std::vector<VerificationRow> verify_turbine_validation(std::FILE* out) {
   const auto reference = shared_dir() / "reference/openfast-runs/seed_validation_surge1000/v1_surge1000_BD/v1_surge1000_BD.out";

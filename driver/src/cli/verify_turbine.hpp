@@ -18,4 +18,9 @@ std::vector<VerificationRow> verify_turbine_validation(std::FILE* out);
 // openfast-runs/oc3_spar_wturb_wavesirr …_BD.out, statistics over 10–60 s.
 std::vector<VerificationRow> verify_turbine_oc3(std::FILE* out);
 
+// OC3-Hywind free decay (rigid multibody, Morison hydro, hydrostatics, catenary; issue 6
+// verification 4): the four natural periods against the published OC3 values, and against the
+// OpenFAST v5 free-decay runs when the reference data are there.
+std::vector<VerificationRow> verify_free_decay(std::FILE* out);
+
 }  // namespace fowtsim::driver
