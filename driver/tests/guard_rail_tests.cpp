@@ -25,6 +25,7 @@
 #include "run/option_checks.hpp"
 #include "run/output_set.hpp"
 #include "run/run_scene.hpp"
+#include "h5_attributes.hpp"
 #include "run_request.hpp"
 
 using namespace fowtsim;
@@ -48,32 +49,6 @@ std::filesystem::path platform_deck() { return testing::source_dir() / "inputs/o
 std::string text_of(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-std::string string_attribute(const std::filesystem::path& h5, const char* name) {
-  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  REQUIRE(file >= 0);
-  const hid_t attr = H5Aopen(file, name, H5P_DEFAULT);
-  const hid_t type = H5Aget_type(attr);
-  char* value = nullptr;
-  H5Aread(attr, type, &value);
-  std::string text = value ? value : "";
-  H5free_memory(value);
-  H5Tclose(type);
-  H5Aclose(attr);
-  H5Fclose(file);
-  return text;
-}
-
-double double_attribute(const std::filesystem::path& h5, const char* name) {
-  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  REQUIRE(file >= 0);
-  const hid_t attr = H5Aopen(file, name, H5P_DEFAULT);
-  double value = NAN;
-  H5Aread(attr, H5T_NATIVE_DOUBLE, &value);
-  H5Aclose(attr);
-  H5Fclose(file);
-  return value;
 }
 
 std::string message_of(const std::function<void()>& f) {

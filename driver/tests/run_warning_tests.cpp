@@ -5,6 +5,7 @@
 
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
+#include "h5_attributes.hpp"
 #include "run_request.hpp"
 
 using namespace fowtsim;
@@ -34,9 +35,11 @@ TEST_CASE("a sea steeper than the breaking limit and a rotor overspeed are warne
   std::ofstream(dir / "steep.yaml") << "include: [" << (testing::source_dir() / "inputs/oc3_hywind/free_decay_pitch.yaml").string()
                                     << "]\nwaves: {model: jonswap, hs_m: 40.0, tp_s: 10.0, seed: 1, duration_s: 100.0, dt_s: 0.25, "
                                        "depth_m: 320.0}\n";
-  RunRequest steep = run_request(dir / "steep.yaml", dir / "steep");
+  RunRequest steep = run_request(dir / "steep.yaml", dir / "steep", "h5");
   steep.t_max_s = 1.0;
   CHECK(any_contains(run_scene(steep, nullptr).warnings, "breaking limit"));
+  // The HDF5 keeps them too.
+  CHECK(string_attribute(dir / "steep.h5", "warnings").find("breaking limit") != std::string::npos);
   // Started at 20 rpm with the built-in controller (rated 12.1 rpm): more than 30 % above.
   std::ofstream(dir / "fast.yaml") << "include: [" << (testing::source_dir() / "inputs/oc3_hywind/turbine_steady_15mps.yaml").string()
                                    << "]\nstructure: {initial_conditions: {rotor_speed_rpm: 20.0}}\n";

@@ -323,6 +323,16 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
       if (blades) blades->load(r);
     };
   }
+  scene.warnings = [&](std::vector<std::string>& warnings) {
+    for (const std::string& w : input_warnings) warnings.push_back(w);
+    if (overspeed_rad_s > 0.0 && max_rotor_speed > overspeed_rad_s)
+      warnings.push_back(fmt::format("rotor overspeed: {:.3g} rpm, more than 30 % above the controller's rated {:.3g} rpm",
+                                     max_rotor_speed * 30.0 / std::numbers::pi, overspeed_rad_s / 1.3 * 30.0 / std::numbers::pi));
+    if (rotor && rotor->wind().outside_queries() > 0)
+      warnings.push_back(fmt::format("{} wind queries fell outside the turbulence grid (deflected tips or a displaced "
+                                     "rotor beyond its edge) and took the mean wind profile there",
+                                     rotor->wind().outside_queries()));
+  };
   RunReport report = [&] {
     try {
       return run_fixed_steps(request, deck, std::move(scene), progress);
@@ -332,15 +342,7 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
     }
   }();
   if (controller) controller->finish(report.simulated_s);
-  for (std::string& w : input_warnings) report.warnings.push_back(std::move(w));
-  if (overspeed_rad_s > 0.0 && max_rotor_speed > overspeed_rad_s)
-    report.warnings.push_back(fmt::format("rotor overspeed: {:.3g} rpm, more than 30 % above the controller's rated {:.3g} rpm",
-                                          max_rotor_speed * 30.0 / std::numbers::pi, overspeed_rad_s / 1.3 * 30.0 / std::numbers::pi));
   if (blades) report.substeps = blades->substeps();
-  if (rotor && rotor->wind().outside_queries() > 0)
-    report.warnings.push_back(fmt::format("{} wind queries fell outside the turbulence grid (deflected tips or a displaced "
-                                          "rotor beyond its edge) and took the mean wind profile there",
-                                          rotor->wind().outside_queries()));
   // What this scene coupled, from what the deck holds.
   std::vector<std::string> parts{"rigid multibody"};
   if (deck.has("hydro") || deck.has("mooring"))

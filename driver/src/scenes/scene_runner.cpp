@@ -120,7 +120,9 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
   report.simulated_s = t;
   report.large_steps = k - k0;
   if (k < steps) report.interrupted_by = interrupt_signal();
-  outputs.finish({report.wall_s, report.interrupted_by ? interrupted_status(t, report.interrupted_by) : "completed", t});
+  if (scene.warnings) scene.warnings(report.warnings);
+  outputs.finish({report.wall_s, report.interrupted_by ? interrupted_status(t, report.interrupted_by) : "completed", t,
+                  report.warnings});
   return report;
 }
 

@@ -21,6 +21,8 @@ struct FixedStepScene {
   io::RunMetadata metadata;                           // version, deck path and hash, dt filled in by run()
   std::function<void(double t, double dt)> step;      // advance from t to t + dt
   std::function<void(double t, std::span<double> row)> row;  // values of `written` at t
+  // What the scene warns about at the end of the run (summary and HDF5); may be empty.
+  std::function<void(std::vector<std::string>& warnings)> warnings;
   // The scene's whole changing state, for checkpoints and restarts (empty: not supported).
   std::function<void(CheckpointWriter&)> save;
   std::function<void(CheckpointReader&)> load;

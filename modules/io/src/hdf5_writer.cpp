@@ -21,7 +21,7 @@ using hdf5::Handle;
 // Root attribute names the writer owns; RunMetadata::extra keys may not reuse them.
 const std::set<std::string, std::less<>> kReservedRootAttributes = {
     "version", "deck_path", "deck_hash", "seeds",       "dt_s",
-    "dt_coupling_s", "status", "wall_time_s", "end_time_s"};
+    "dt_coupling_s", "status", "wall_time_s", "end_time_s", "warnings"};
 
 // Replaces attribute `name` of `object` (so finish() can overwrite the "running" status).
 Handle create_attribute(hid_t object, const std::string& name, hid_t file_type, hid_t space,
@@ -234,6 +234,9 @@ void Hdf5Writer::finish(const RunEnd& end) {
   write_double_attribute(root, "wall_time_s", end.wall_time_s, w.path_text);
   write_string_attribute(root, "status", end.status, w.path_text);
   write_double_attribute(root, "end_time_s", end.end_time_s, w.path_text);
+  std::string warnings;
+  for (const std::string& line : end.warnings) warnings += (warnings.empty() ? "" : "\n") + line;
+  write_string_attribute(root, "warnings", warnings, w.path_text);
   w.write_buffered_and_flush();
   w.phase = Impl::Phase::finished;
   w.datasets.clear();

@@ -31,6 +31,7 @@ struct RunEnd {
   double wall_time_s = 0.0;  // wall-clock duration of the run [s]
   std::string status;        // "completed", or "failed: <message>"
   double end_time_s = 0.0;   // last simulated time reached [s]
+  std::vector<std::string> warnings;  // what the run summary warns about (HDF5: one per line)
 };
 
 class OutputSink {
