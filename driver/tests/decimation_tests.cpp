@@ -51,3 +51,8 @@ TEST_CASE("output decimation does not change a flexible-blade turbine's results"
   check_same_at_common_times(testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml",
                              "wind: {model: steady, speed_m_s: 12.0, reference_height_m: 90.0}\n");
 }
+
+TEST_CASE("output decimation does not change the platform-loads scene's results", "[verification][run]") {
+  // The catenary mooring is warm-started from the previous evaluation, made at every step.
+  check_same_at_common_times(testing::source_dir() / "inputs/oc3_hywind/platform_in_waves.yaml", "");
+}

@@ -125,13 +125,19 @@ RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& 
   scene.metadata.seeds = sea.seeds();
   scene.metadata.extra = {{"scene", "platform"}};
   std::vector<double> values(all.size());
-  scene.step = [](double, double) {};  // the motion is prescribed: nothing to integrate
-  scene.row = [&](double t, std::span<double> row) {
+  // The motion is prescribed: a step only evaluates the sea at its end, every step, so the
+  // mooring solver's warm starts — and the results — do not depend on output decimation; a row
+  // reads the evaluation of its time.
+  auto evaluate = [&](double t) {
     Vec6 q, q_dot;
     trajectory.at(t, q, q_dot);
     for (int k = 0; k < 6; ++k) values[k] = k < 3 ? q[k] : q[k] / kDegree;
     sea.evaluate(t, platform_motion(q, q_dot));
     sea.channel_values(t, std::span<double>(values).subspan(6));
+  };
+  evaluate(0.0);
+  scene.step = [&](double t, double dt) { evaluate(t + dt); };
+  scene.row = [&](double, std::span<double> row) {
     for (std::size_t k = 0; k < picked.size(); ++k) row[k] = values[picked[k]];
   };
   std::vector<std::string> stiffness_rows;
