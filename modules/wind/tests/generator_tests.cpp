@@ -2,6 +2,8 @@
 // statistics of generated fields (spectra, turbulence intensity, coherence) against IEC 61400-1.
 #include <catch2/catch.hpp>
 
+#include "series_support.hpp"
+
 #include <fftw3.h>
 
 #include <cmath>
@@ -17,6 +19,8 @@
 using namespace fowtsim;
 using namespace fowtsim::wind;
 using Complex = std::complex<double>;
+using test_support::dft;
+using test_support::series_at;
 
 namespace {
 
@@ -62,22 +66,7 @@ WindParams small_turbulent(std::uint64_t seed) {
   return p;
 }
 
-// One-sided periodogram P_m = 2 |DFT_m|² dt / N of a real series (m = 0..N/2).
-std::vector<Complex> dft(const std::vector<double>& series) {
-  const int n = static_cast<int>(series.size());
-  std::vector<double> in(series);
-  std::vector<Complex> out(n / 2 + 1);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(n, in.data(), reinterpret_cast<fftw_complex*>(out.data()), FFTW_ESTIMATE);
-  fftw_execute(plan);
-  fftw_destroy_plan(plan);
-  return out;
-}
 
-std::vector<double> series_at(const FullField& f, int iy, int iz, int c) {
-  std::vector<double> s(f.nt);
-  for (int it = 0; it < f.nt; ++it) s[it] = f.grid[((static_cast<std::size_t>(it) * f.nz + iz) * f.ny + iy) * 3 + c];
-  return s;
-}
 
 }  // namespace
 

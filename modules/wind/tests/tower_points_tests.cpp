@@ -3,6 +3,8 @@
 // and the .bts round trip.
 #include <catch2/catch.hpp>
 
+#include "series_support.hpp"
+
 #include <fftw3.h>
 
 #include <Eigen/Core>
@@ -24,6 +26,8 @@
 using namespace fowtsim;
 using namespace fowtsim::wind;
 using Complex = std::complex<double>;
+using test_support::dft;
+using test_support::series_at;
 
 namespace {
 
@@ -90,21 +94,7 @@ std::array<double, 3> covariance_errors(int ny, int nz, double dy, double dz, in
   return worst;
 }
 
-std::vector<Complex> dft(const std::vector<double>& series) {
-  const int n = static_cast<int>(series.size());
-  std::vector<double> in(series);
-  std::vector<Complex> out(n / 2 + 1);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(n, in.data(), reinterpret_cast<fftw_complex*>(out.data()), FFTW_ESTIMATE);
-  fftw_execute(plan);
-  fftw_destroy_plan(plan);
-  return out;
-}
 
-std::vector<double> grid_series(const FullField& f, int iy, int iz, int c) {
-  std::vector<double> s(f.nt);
-  for (int it = 0; it < f.nt; ++it) s[it] = f.grid[((static_cast<std::size_t>(it) * f.nz + iz) * f.ny + iy) * 3 + c];
-  return s;
-}
 
 std::vector<double> tower_series(const FullField& f, int k, int c) {
   std::vector<double> s(f.nt);
@@ -127,7 +117,7 @@ TEST_CASE("generated tower points follow TurbSim's layout", "[unit][wind][turbul
   REQUIRE(odd.field.n_tower == 3);
   REQUIRE(odd.field.tower.size() == static_cast<std::size_t>(odd.field.nt) * 3 * 3);
   for (int c = 0; c < 3; ++c) {
-    const std::vector<double> bottom = grid_series(odd.field, 2, 0, c), first = tower_series(odd.field, 0, c);
+    const std::vector<double> bottom = series_at(odd.field, 2, 0, c), first = tower_series(odd.field, 0, c);
     CHECK(bottom == first);  // exact copy: the same point
   }
   const GeneratedTurbulence even = generate_turbulence(tower_case(4, 3));
@@ -233,7 +223,7 @@ TEST_CASE("tower points have the IEC spectra, intensity, mean profile and cohere
         var_sum[k] += var;
         tower_dft[k] = dft(s);
       }
-      const std::vector<Complex> grid_dft = dft(grid_series(f, ny / 2, 0, 0));  // odd: centre; even: right of centre
+      const std::vector<Complex> grid_dft = dft(series_at(f, ny / 2, 0, 0));  // odd: centre; even: right of centre
       for (std::size_t q = 0; q < pairs.size(); ++q) {
         const std::vector<Complex>& xa = tower_dft[pairs[q].a];
         const std::vector<Complex>& xb = pairs[q].b < 0 ? grid_dft : tower_dft[pairs[q].b];
