@@ -2,7 +2,9 @@
 // Checkpoints of a fixed-step scene (issue 16): the whole changing state of a scene in one binary
 // file, so that `fowtsim run DECK --restart FILE` continues bit-identically to an uninterrupted
 // run. Values are written as their bytes (doubles bit for bit); a header ties the file to the
-// deck (hash), the step and the time step, and the reader refuses anything else.
+// deck (hash), the step and the time step, and the reader refuses anything else. Both archives
+// have io(x): a state type writes one `template <class Archive> void checkpoint(Archive&)` that
+// lists its fields once, for saving and loading alike, so the two can never disagree on order.
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -42,6 +44,10 @@ class CheckpointWriter {
   template <class T, std::size_t N>
   void put(const std::array<T, N>& a) {
     for (const T& x : a) put(x);
+  }
+  template <class T>
+  void io(const T& v) {
+    put(v);
   }
 
  private:
@@ -84,6 +90,10 @@ class CheckpointReader {
   template <class T, std::size_t N>
   void get(std::array<T, N>& a) {
     for (T& x : a) get(x);
+  }
+  template <class T>
+  void io(T& v) {
+    get(v);
   }
   [[noreturn]] void mismatch(const std::string& what) const;
 

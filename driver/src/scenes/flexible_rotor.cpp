@@ -305,76 +305,40 @@ void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const Ro
 
 namespace {
 
-void save_beam(CheckpointWriter& w, const beam::BeamState& s) {
-  w.put(s.time_s);
-  w.put(s.position_m);
-  w.put(s.orientation);
-  w.put(s.velocity);
-  w.put(s.acceleration);
-  w.put(s.acceleration_valid);
-  const beam::StepMatrixCache& c = s.step_matrix;
-  for (const std::vector<Mat6>* blocks : c.factored.storage()) w.put(*blocks);
-  w.put(c.valid);
-  w.put(c.age);
-  w.put(c.turned_rad);
-  w.put(c.weights);
-}
-
-void load_beam(CheckpointReader& r, beam::BeamState& s) {
-  const long n = static_cast<long>(s.position_m.size());
-  r.get(s.time_s);
-  r.get(s.position_m, n);
-  r.get(s.orientation, n);
-  r.get(s.velocity, n);
-  r.get(s.acceleration, n);
-  r.get(s.acceleration_valid);
-  beam::StepMatrixCache& c = s.step_matrix;
-  for (std::vector<Mat6>* blocks : c.factored.storage()) r.get(*blocks);
-  r.get(c.valid);
-  r.get(c.age);
-  r.get(c.turned_rad);
-  r.get(c.weights);
-}
-
-void save_shaft(CheckpointWriter& w, const ShaftMotion& m) {
-  for (const Vec3* v : {&m.apex_position_m, &m.apex_velocity_m_s, &m.apex_acceleration_m_s2, &m.angular_velocity_rad_s,
-                        &m.angular_acceleration_rad_s2, &m.tower_base_m, &m.tower_axis})
-    w.put(*v);
-  w.put(m.orientation);
-}
-
-void load_shaft(CheckpointReader& r, ShaftMotion& m) {
-  for (Vec3* v : {&m.apex_position_m, &m.apex_velocity_m_s, &m.apex_acceleration_m_s2, &m.angular_velocity_rad_s,
-                  &m.angular_acceleration_rad_s2, &m.tower_base_m, &m.tower_axis})
-    r.get(*v);
-  r.get(m.orientation);
+template <class Archive>
+void beam_checkpoint(Archive& a, beam::BeamState& s) {
+  a.io(s.time_s);
+  a.io(s.position_m);
+  a.io(s.orientation);
+  a.io(s.velocity);
+  a.io(s.acceleration);
+  a.io(s.acceleration_valid);
+  for (auto* blocks : s.step_matrix.factored.storage()) a.io(*blocks);
+  a.io(s.step_matrix.valid);
+  a.io(s.step_matrix.age);
+  a.io(s.step_matrix.turned_rad);
+  a.io(s.step_matrix.weights);
 }
 
 }  // namespace
 
-void FlexibleRotor::save(CheckpointWriter& w) const {
-  for (const beam::BeamState& s : state_.blades) save_beam(w, s);
-  w.put(state_.spin);
-  w.put(state_.pitch_rad);
-  w.put(state_.pitch_rate_rad_s);
-  w.put(state_.pitch_acceleration_rad_s2);
-  w.put(state_.time_s);
-  save_shaft(w, shaft_);
-  w.put(last_.force_h_N);
-  w.put(last_.moment_h_N_m);
+template <class Archive>
+void FlexibleRotor::checkpoint(Archive& a) {
+  for (beam::BeamState& s : state_.blades) beam_checkpoint(a, s);
+  a.io(state_.spin);
+  a.io(state_.pitch_rad);
+  a.io(state_.pitch_rate_rad_s);
+  a.io(state_.pitch_acceleration_rad_s2);
+  a.io(state_.time_s);
+  for (Vec3* v : {&shaft_.apex_position_m, &shaft_.apex_velocity_m_s, &shaft_.apex_acceleration_m_s2,
+                  &shaft_.angular_velocity_rad_s, &shaft_.angular_acceleration_rad_s2, &shaft_.tower_base_m, &shaft_.tower_axis})
+    a.io(*v);
+  a.io(shaft_.orientation);
+  a.io(last_.force_h_N);
+  a.io(last_.moment_h_N_m);
 }
-
-void FlexibleRotor::load(CheckpointReader& r) {
-  for (beam::BeamState& s : state_.blades) load_beam(r, s);
-  r.get(state_.spin);
-  r.get(state_.pitch_rad);
-  r.get(state_.pitch_rate_rad_s);
-  r.get(state_.pitch_acceleration_rad_s2);
-  r.get(state_.time_s);
-  load_shaft(r, shaft_);
-  r.get(last_.force_h_N);
-  r.get(last_.moment_h_N_m);
-}
+template void FlexibleRotor::checkpoint(CheckpointWriter&);
+template void FlexibleRotor::checkpoint(CheckpointReader&);
 
 FlexibleRotor::HubLoad FlexibleRotor::advance(double t, double dt_large, int substeps, const ShaftMotion& begin,
                                               const ShaftMotion& end, const RotorDemands& demands) {

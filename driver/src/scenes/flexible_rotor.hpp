@@ -139,9 +139,10 @@ class FlexibleRotor {
   // Root loads of all blades now (same form), the first sample of the next large step.
   HubLoad hub_load() const { return last_; }
   const FlexibleRotorState& state() const { return state_; }
-  // Everything that changes (state, shaft motion, last root loads), for checkpoints.
-  void save(CheckpointWriter& w) const;
-  void load(CheckpointReader& r);
+  // Writes (CheckpointWriter) or reads (CheckpointReader) everything that changes: state, shaft
+  // motion, last root loads.
+  template <class Archive>
+  void checkpoint(Archive& archive);
   const FlexibleRotorParams& params() const { return params_; }
   // Motion of blade i's pitched root frame for the shaft motion and the current spin and pitch.
   BladeFrame frame(const ShaftMotion& shaft, int blade) const;

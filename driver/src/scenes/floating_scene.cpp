@@ -62,13 +62,10 @@ class Controller {
   }
   const control::ControllerOutput& output() const { return output_; }
   // A DISCON library's state lives in the library: only the built-in law can be checkpointed.
-  void save(CheckpointWriter& w) const {
-    w.put(std::get<control::BaselineState>(state_));
-    w.put(output_);
-  }
-  void load(CheckpointReader& r) {
-    r.get(std::get<control::BaselineState>(state_));
-    r.get(output_);
+  template <class Archive>
+  void checkpoint(Archive& a) {
+    a.io(std::get<control::BaselineState>(state_));
+    a.io(output_);
   }
   bool can_checkpoint() const { return std::holds_alternative<control::BaselineState>(state_); }
   // The last call a DISCON library gets (status −1: it closes its files); nothing for the built-in law.
@@ -286,42 +283,30 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
   // Checkpoints: the scene's whole changing state (the wind field and the sea are rebuilt from the
   // deck, identically).
   if (!controller || controller->can_checkpoint()) {
-    scene.save = [&](CheckpointWriter& w) {
-      w.put(state.position_m);
-      w.put(state.orientation);
-      w.put(state.velocity_m_s);
-      w.put(state.angular_velocity_rad_s);
-      for (const double x : {state.rotor_azimuth_rad, state.rotor_speed_rad_s, state.generator_azimuth_rad,
-                             state.generator_speed_rad_s, state.rotor_acceleration_rad_s2, state.generator_acceleration_rad_s2,
-                             state.nacelle_yaw_rad, state.nacelle_yaw_rate_rad_s, state.nacelle_yaw_acceleration_rad_s2})
-        w.put(x);
-      w.put(stage_loads.generator_torque_held_N_m());
-      w.put(stage_loads.pitch_rad());
-      if (controller) controller->save(w);
-      w.put(sea.memory());
-      if (rotor) rotor->save(w);
-      if (blades) blades->save(w);
-    };
-    scene.load = [&](CheckpointReader& r) {
-      r.get(state.position_m);
-      r.get(state.orientation);
-      r.get(state.velocity_m_s);
-      r.get(state.angular_velocity_rad_s);
+    // One list of fields for saving and loading (run/checkpoint.hpp); setters run on save too,
+    // with the values they already hold.
+    const auto transfer = [&](auto& a) {
+      a.io(state.position_m);
+      a.io(state.orientation);
+      a.io(state.velocity_m_s);
+      a.io(state.angular_velocity_rad_s);
       for (double* x : {&state.rotor_azimuth_rad, &state.rotor_speed_rad_s, &state.generator_azimuth_rad,
                         &state.generator_speed_rad_s, &state.rotor_acceleration_rad_s2, &state.generator_acceleration_rad_s2,
                         &state.nacelle_yaw_rad, &state.nacelle_yaw_rate_rad_s, &state.nacelle_yaw_acceleration_rad_s2})
-        r.get(*x);
-      double torque = 0.0, pitch = 0.0;
-      r.get(torque);
-      r.get(pitch);
+        a.io(*x);
+      double torque = stage_loads.generator_torque_held_N_m(), pitch = stage_loads.pitch_rad();
+      a.io(torque);
+      a.io(pitch);
       stage_loads.hold(torque, pitch);
-      if (controller) controller->load(r);
-      SeaModules::Memory memory;
-      r.get(memory);
+      if (controller) controller->checkpoint(a);
+      SeaModules::Memory memory = sea.memory();
+      a.io(memory);
       sea.restore(memory);
-      if (rotor) rotor->load(r);
-      if (blades) blades->load(r);
+      if (rotor) rotor->checkpoint(a);
+      if (blades) blades->checkpoint(a);
     };
+    scene.save = [transfer](CheckpointWriter& w) { transfer(w); };
+    scene.load = [transfer](CheckpointReader& r) { transfer(r); };
   }
   scene.warnings = [&](std::vector<std::string>& warnings) {
     for (const std::string& w : input_warnings) warnings.push_back(w);

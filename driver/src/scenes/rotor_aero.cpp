@@ -90,60 +90,35 @@ void RotorAero::evaluate_placed(double t, const Vec3& apex_m, const Mat3& t_gh, 
   moment_ = t_gh * output_.rotor.moment_hub_N_m;
 }
 
-void RotorAero::save(CheckpointWriter& w) const {
-  w.put(input_.hub_position_m);
-  w.put(input_.hub_orientation);
-  w.put(input_.rotor_speed_rad_s);
-  w.put(input_.blade_pitch_rad);
-  w.put(input_.node_position_m);
-  w.put(input_.node_orientation);
-  w.put(input_.node_velocity_m_s);
-  w.put(input_.inflow_velocity_m_s);
-  w.put(input_.tower_base_position_m);
-  w.put(input_.tower_axis);
-  w.put(input_.time_s);
-  w.put(output_.force_N_m);
-  w.put(output_.moment_N_m_m);
-  w.put(output_.disturbed_inflow_m_s);
-  w.put(output_.nodes);
-  const aero::RotorResult& rr = output_.rotor;
-  w.put(rr.force_hub_N);
-  w.put(rr.moment_hub_N_m);
-  for (const double x : {rr.power_W, rr.mean_axial_inflow_m_s, rr.skew_rad, rr.radius_m, rr.area_m2, rr.tip_speed_ratio, rr.cp,
-                         rr.ct, rr.cq})
-    w.put(x);
-  w.put(output_.unconverged_nodes);
-  w.put(force_);
-  w.put(moment_);
-}
-
-void RotorAero::load(CheckpointReader& r) {
-  const auto n = static_cast<long>(output_.nodes.size());
-  r.get(input_.hub_position_m);
-  r.get(input_.hub_orientation);
-  r.get(input_.rotor_speed_rad_s);
-  r.get(input_.blade_pitch_rad);
-  r.get(input_.node_position_m);
-  r.get(input_.node_orientation, n);
-  r.get(input_.node_velocity_m_s);
-  r.get(input_.inflow_velocity_m_s);
-  r.get(input_.tower_base_position_m);
-  r.get(input_.tower_axis);
-  r.get(input_.time_s);
-  r.get(output_.force_N_m);
-  r.get(output_.moment_N_m_m);
-  r.get(output_.disturbed_inflow_m_s);
-  r.get(output_.nodes, n);
+template <class Archive>
+void RotorAero::checkpoint(Archive& a) {
+  a.io(input_.hub_position_m);
+  a.io(input_.hub_orientation);
+  a.io(input_.rotor_speed_rad_s);
+  a.io(input_.blade_pitch_rad);
+  a.io(input_.node_position_m);
+  a.io(input_.node_orientation);
+  a.io(input_.node_velocity_m_s);
+  a.io(input_.inflow_velocity_m_s);
+  a.io(input_.tower_base_position_m);
+  a.io(input_.tower_axis);
+  a.io(input_.time_s);
+  a.io(output_.force_N_m);
+  a.io(output_.moment_N_m_m);
+  a.io(output_.disturbed_inflow_m_s);
+  a.io(output_.nodes);
   aero::RotorResult& rr = output_.rotor;
-  r.get(rr.force_hub_N);
-  r.get(rr.moment_hub_N_m);
+  a.io(rr.force_hub_N);
+  a.io(rr.moment_hub_N_m);
   for (double* x : {&rr.power_W, &rr.mean_axial_inflow_m_s, &rr.skew_rad, &rr.radius_m, &rr.area_m2, &rr.tip_speed_ratio,
                     &rr.cp, &rr.ct, &rr.cq})
-    r.get(*x);
-  r.get(output_.unconverged_nodes);
-  r.get(force_);
-  r.get(moment_);
+    a.io(*x);
+  a.io(output_.unconverged_nodes);
+  a.io(force_);
+  a.io(moment_);
 }
+template void RotorAero::checkpoint(CheckpointWriter&);
+template void RotorAero::checkpoint(CheckpointReader&);
 
 std::vector<ChannelInfo> RotorAero::channels() const {
   std::vector<ChannelInfo> all = aero::Aero::channels(params_);

@@ -50,9 +50,10 @@ class RotorAero {
   // steps and restores it, so results do not depend on decimation. No allocation once sized.
   void save_memory(std::vector<aero::NodeResult>& memory) const { memory = output_.nodes; }
   void restore_memory(const std::vector<aero::NodeResult>& memory) { output_.nodes = memory; }
-  // The last evaluation's input and output whole (the channels and the warm starts), for checkpoints.
-  void save(CheckpointWriter& w) const;
-  void load(CheckpointReader& r);
+  // Writes or reads the last evaluation's input and output whole (the channels and the warm
+  // starts), for checkpoints.
+  template <class Archive>
+  void checkpoint(Archive& archive);
 
   std::vector<ChannelInfo> channels() const;  // aero channels, then Wind1VelX/Y/Z
   void channel_values(double t, std::span<double> out) const;

@@ -176,27 +176,19 @@ void TurbineBlades::use_step_spin_profile(double t) {
                     mean_generator_acceleration_};
 }
 
-void TurbineBlades::save(CheckpointWriter& w) const {
-  rotor_.save(w);
-  w.put(held_.force_h_N);
-  w.put(held_.moment_h_N_m);
-  w.put(spin_before_);
-  w.put(profile_.t0);
-  w.put(profile_.at_t0);
-  w.put(mean_rotor_acceleration_);
-  w.put(mean_generator_acceleration_);
+template <class Archive>
+void TurbineBlades::checkpoint(Archive& a) {
+  rotor_.checkpoint(a);
+  a.io(held_.force_h_N);
+  a.io(held_.moment_h_N_m);
+  a.io(spin_before_);
+  a.io(profile_.t0);
+  a.io(profile_.at_t0);
+  a.io(mean_rotor_acceleration_);
+  a.io(mean_generator_acceleration_);
 }
-
-void TurbineBlades::load(CheckpointReader& r) {
-  rotor_.load(r);
-  r.get(held_.force_h_N);
-  r.get(held_.moment_h_N_m);
-  r.get(spin_before_);
-  r.get(profile_.t0);
-  r.get(profile_.at_t0);
-  r.get(mean_rotor_acceleration_);
-  r.get(mean_generator_acceleration_);
-}
+template void TurbineBlades::checkpoint(CheckpointWriter&);
+template void TurbineBlades::checkpoint(CheckpointReader&);
 
 void TurbineBlades::copy_spin(multibody::State& state) const {
   const SpinState& s = rotor_.state().spin;

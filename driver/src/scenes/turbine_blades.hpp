@@ -62,9 +62,9 @@ class TurbineBlades {
 
   const ShaftMotion& shaft() const { return rotor_.shaft(); }
   const FlexibleRotor& rotor() const { return rotor_; }
-  // Everything that changes, for checkpoints.
-  void save(CheckpointWriter& w) const;
-  void load(CheckpointReader& r);
+  // Writes or reads everything that changes, for checkpoints (run/checkpoint.hpp).
+  template <class Archive>
+  void checkpoint(Archive& archive);
 
   std::vector<ChannelInfo> channels() const;
   void channel_values(std::span<double> out) const;
