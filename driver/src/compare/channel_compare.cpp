@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "compare/window_statistics.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/interpolation.hpp"
 
@@ -30,24 +31,6 @@ Statistics statistics(const std::vector<double>& v) {
   s.mean /= static_cast<double>(v.size());
   s.rms = std::sqrt(s.rms / static_cast<double>(v.size()));
   return s;
-}
-
-double correlation(const std::vector<double>& a, const std::vector<double>& b) {
-  const double ma = statistics(a).mean, mb = statistics(b).mean;
-  double sab = 0, saa = 0, sbb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    sab += (a[i] - ma) * (b[i] - mb);
-    saa += (a[i] - ma) * (a[i] - ma);
-    sbb += (b[i] - mb) * (b[i] - mb);
-  }
-  return (saa > 0 && sbb > 0) ? sab / std::sqrt(saa * sbb) : kNaN;
-}
-
-double standard_deviation(const std::vector<double>& v) {
-  const double m = statistics(v).mean;
-  double s = 0.0;
-  for (double x : v) s += (x - m) * (x - m);
-  return std::sqrt(s / static_cast<double>(v.size()));
 }
 
 ChannelComparison compare_channel(const std::string& name, const std::string& unit, const std::vector<double>& ref,

@@ -44,15 +44,15 @@ double standard_deviation(const std::vector<double>& v) {
   return std::sqrt(s / static_cast<double>(v.size()));
 }
 
-double correlation(const PairedSeries& p) {
-  const double ma = mean(p.ref), mb = mean(p.test);
+double correlation(const std::vector<double>& a, const std::vector<double>& b) {
+  const double ma = mean(a), mb = mean(b);
   double ab = 0.0, aa = 0.0, bb = 0.0;
-  for (std::size_t i = 0; i < p.ref.size(); ++i) {
-    ab += (p.ref[i] - ma) * (p.test[i] - mb);
-    aa += (p.ref[i] - ma) * (p.ref[i] - ma);
-    bb += (p.test[i] - mb) * (p.test[i] - mb);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ab += (a[i] - ma) * (b[i] - mb);
+    aa += (a[i] - ma) * (a[i] - ma);
+    bb += (b[i] - mb) * (b[i] - mb);
   }
-  return ab / std::sqrt(aa * bb);
+  return aa > 0.0 && bb > 0.0 ? ab / std::sqrt(aa * bb) : std::nan("");
 }
 
 }  // namespace fowtsim::driver

@@ -1,7 +1,7 @@
 #pragma once
 // Statistics of a channel against a reference run over a time window: the two series on the
 // reference's samples (ours interpolated onto them), their means, standard deviations and
-// correlation — how the flexible-turbine checks compare runs with different models.
+// correlation — how the flexible-turbine checks and `fowtsim compare` compare runs.
 #include <string_view>
 #include <vector>
 
@@ -20,6 +20,8 @@ PairedSeries paired_series(const io::ChannelTable& ref, std::string_view ref_nam
 
 double mean(const std::vector<double>& v);
 double standard_deviation(const std::vector<double>& v);
-double correlation(const PairedSeries& p);
+// Pearson correlation; NaN when either series is constant.
+double correlation(const std::vector<double>& a, const std::vector<double>& b);
+inline double correlation(const PairedSeries& p) { return correlation(p.ref, p.test); }
 
 }  // namespace fowtsim::driver
