@@ -26,9 +26,9 @@ Schema station_schema() {
 
 }  // namespace
 
-std::vector<io::SchemaField> beam_schema_fields(int default_segments) {
+std::vector<io::SchemaField> beam_schema_fields(int default_segments, int max_segments) {
   return {
-      {"segments", Schema::integer().at_least(1).at_most(100000).default_value(default_segments).doc("finite volumes")},
+      {"segments", Schema::integer().at_least(1).at_most(max_segments).default_value(default_segments).doc("finite volumes")},
       {"integrator", Schema::choice({"generalized_alpha", "erk"}).default_value("generalized_alpha")
                          .doc("integrator of the locally linear system in each step")},
       {"spectral_radius", Schema::number().at_least(0.0).at_most(1.0).default_value(0.0)

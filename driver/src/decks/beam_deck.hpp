@@ -12,7 +12,7 @@ namespace fowtsim::driver {
 
 // segments, integrator, spectral_radius, key_points_m, twist_deg, fit_degree, stations,
 // damping_mu_s, mass_damping_1_s.
-std::vector<io::SchemaField> beam_schema_fields(int default_segments);
+std::vector<io::SchemaField> beam_schema_fields(int default_segments, int max_segments);
 
 // The definition in the section at `path` of `deck` (errors located at its keys).
 beam::BeamDefinition beam_definition(const io::ValidatedDeck& deck, const std::string& path);

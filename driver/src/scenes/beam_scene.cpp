@@ -43,7 +43,7 @@ Schema beam_scene_schema() {
                      {"decimation", Schema::integer().at_least(1).default_value(1).doc("write every k-th step")},
                      {"channels", Schema::sequence(Schema::string()).optional().doc("BeamDyn channel names; absent = all")},
                  }).optional().doc("what to write")},
-      {"beam", Schema::map(beam_schema_fields(48)).doc("the beam: reference line, sections, damping, discretisation")},
+      {"beam", Schema::map(beam_schema_fields(48, 100000)).doc("the beam: reference line, sections, damping, discretisation")},
       {"root", Schema::map({
                    {"position_m", number_vector(3, "root position, global frame").optional()},
                    {"angular_velocity_rad_s", number_vector(3, "constant angular velocity of the root about the global origin").optional()},

@@ -173,10 +173,10 @@ void FlexibleRotor::advance_pitch(double dt, double command) {
   Eigen::Matrix2d a;
   a << 0.0, 1.0, -w * w, -2.0 * z * w;
   const Eigen::Vector2d forcing(0.0, w * w * command);
-  const Eigen::Matrix2d lhs = Eigen::Matrix2d::Identity() - 0.5 * dt * a;
+  const Eigen::Matrix2d lhs_inverse = (Eigen::Matrix2d::Identity() - 0.5 * dt * a).inverse();
   for (int b = 0; b < kBlades; ++b) {
     const Eigen::Vector2d x0(state_.pitch_rad[b], state_.pitch_rate_rad_s[b]);
-    const Eigen::Vector2d x1 = lhs.partialPivLu().solve(x0 + 0.5 * dt * (a * x0) + dt * forcing);
+    const Eigen::Vector2d x1 = lhs_inverse * (x0 + 0.5 * dt * (a * x0) + dt * forcing);
     state_.pitch_acceleration_rad_s2[b] = (x1[1] - x0[1]) / dt;
     state_.pitch_rad[b] = x1[0];
     state_.pitch_rate_rad_s[b] = x1[1];
