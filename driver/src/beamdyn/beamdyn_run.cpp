@@ -150,12 +150,12 @@ RunReport run_single_beam(const BeamDynSetup& setup_in, const SingleBeamRun& how
       if (k <= steps) report.interrupted_by = interrupt_signal();
     }
   } catch (const NumericalError& e) {
-    outputs.finish({elapsed(), std::string("failed: ") + e.what(), t});
+    outputs.finish({elapsed(), std::string("failed: ") + e.what(), t, {}});
     throw;
   }
   report.wall_s = elapsed();
   report.simulated_s = t;
-  outputs.finish({report.wall_s, report.interrupted_by ? interrupted_status(t, report.interrupted_by) : "completed", t});
+  outputs.finish({report.wall_s, report.interrupted_by ? interrupted_status(t, report.interrupted_by) : "completed", t, {}});
   return report;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <chrono>
 #include <fstream>
 
 #include <fmt/format.h>
@@ -22,11 +23,12 @@
 namespace fowtsim::driver {
 namespace {
 
-// The top-level keys that make a deck a scene deck, with the scene each one picks.
+// The top-level keys that make a deck a scene deck, with the scene each one picks, in the order
+// run_scene tries them.
 constexpr std::array<std::pair<const char*, const char*>, 4> kSceneKeys = {{
-    {"structure", "floating turbine"},
-    {"platform_motion", "platform loads on a prescribed motion"},
     {"beam", "one clamped beam"},
+    {"platform_motion", "platform loads on a prescribed motion"},
+    {"structure", "floating turbine"},
     {"toy_oscillators", "the coupling test problem"},
 }};
 
@@ -67,9 +69,10 @@ void reject_foreign_input(const std::filesystem::path& path) {
   if (starts_with_openfast_banner(path)) throw_not_a_deck(path, " (it starts with an OpenFAST-style banner line)");
 }
 
-// The deck's top-level mapping; a file that is not YAML, is empty, or holds none of the scene keys
-// (a component deck such as hydro.yaml) stops here, saying which keys make a scene.
-void check_scene_keys(const std::filesystem::path& path) {
+// The scene key of the deck's top-level mapping (kSceneKeys); a file that is not YAML, is empty,
+// or holds none of them (a component deck such as hydro.yaml) stops here, saying which keys make a
+// scene. The deck is loaded once here; the scene then reads it against its schema.
+std::string scene_key(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
   const bool yaml_named = ext == ".yaml" || ext == ".yml";
   io::LoadedDeck loaded;
@@ -87,7 +90,7 @@ void check_scene_keys(const std::filesystem::path& path) {
   std::string keys;
   std::vector<std::string> scene_keys;
   for (const auto& [key, scene] : kSceneKeys) {
-    if (loaded.root.find(key)) return;
+    if (loaded.root.find(key)) return key;
     keys += fmt::format("{}`{}` ({})", keys.empty() ? "" : ", ", key, scene);
     scene_keys.emplace_back(key);
   }
@@ -114,16 +117,26 @@ void check_scene_keys(const std::filesystem::path& path) {
 
 }  // namespace
 
-RunReport run_scene(const RunRequest& request_in, const ProgressCallback& progress) {
-  const RunRequest request = resolve_output_names(request_in);
+namespace {
+
+RunReport run_picked_scene(const RunRequest& request, const ProgressCallback& progress) {
   if (is_beamdyn_driver_file(request.deck_path)) return run_beamdyn_case(request, progress);
   reject_foreign_input(request.deck_path);
-  check_scene_keys(request.deck_path);
-  if (is_beam_scene(request.deck_path)) return run_beam_scene(request, progress);
-  if (is_platform_scene(request.deck_path)) return run_platform_scene(request, progress);
-  if (is_floating_scene(request.deck_path)) return run_floating_scene(request, progress);
+  const std::string scene = scene_key(request.deck_path);
+  if (scene == "beam") return run_beam_scene(request, progress);
+  if (scene == "platform_motion") return run_platform_scene(request, progress);
+  if (scene == "structure") return run_floating_scene(request, progress);
   const io::ValidatedDeck deck = io::read_deck(scene_schema(), request.deck_path);
   return run_toy_scene(deck, request, progress);
+}
+
+}  // namespace
+
+RunReport run_scene(const RunRequest& request_in, const ProgressCallback& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  RunReport report = run_picked_scene(resolve_output_names(request_in), progress);
+  report.total_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
 }
 
 }  // namespace fowtsim::driver

@@ -24,6 +24,7 @@ struct RunRequest {
 struct RunReport {
   double simulated_s = 0.0;                    // simulated time reached [s]
   double wall_s = 0.0;                         // wall-clock time of the time loop [s]
+  double total_wall_s = 0.0;                   // of the whole run: decks, set-up (turbulence, sea), loop, output [s]
   long large_steps = 0;                        // large steps taken
   int substeps = 1;                            // small steps per large step
   std::string coupling;                        // coupling mode

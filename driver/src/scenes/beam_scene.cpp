@@ -53,11 +53,6 @@ Schema beam_scene_schema() {
   });
 }
 
-bool is_beam_scene(const std::filesystem::path& deck) {
-  const io::LoadedDeck loaded = io::load_deck(deck);
-  return loaded.root.find("beam") != nullptr;
-}
-
 RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& progress) {
   const io::ValidatedDeck deck = io::read_deck(beam_scene_schema(), request.deck_path);
   const io::ValidatedDeck b = deck.section("beam");

@@ -9,9 +9,6 @@ namespace fowtsim::driver {
 
 io::Schema beam_scene_schema();
 
-// True if the YAML deck's top level holds a `beam` mapping.
-bool is_beam_scene(const std::filesystem::path& deck);
-
 RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& progress);
 
 }  // namespace fowtsim::driver

@@ -43,6 +43,8 @@ BladeAeroMap::BladeAeroMap(const aero::Params& aero_params, const beam::BeamMode
     a.airfoil_f = t_hr.transpose() * rigid.node_orientation[k];
     aero_nodes_.push_back(a);
   }
+  force_f_.resize(3, count);
+  moment_f_.resize(3, count);
 
   // Breakpoints: segment boundaries and aero nodes, inside the aero span.
   const double s_first = aero_nodes_.front().span_m, s_last = std::min(aero_nodes_.back().span_m, blade.length_m);
@@ -105,10 +107,10 @@ Vec3 BladeAeroMap::velocity(const beam::BeamState& state, const Along& a) const 
   return at(a.lower) + a.fraction * (at(a.lower + 1) - at(a.lower));
 }
 
-void BladeAeroMap::node_deformations(const beam::BeamState& state) const {
+void BladeAeroMap::node_deformations(const beam::BeamState& state, bool with_quaternions) const {
   for (int n = 0; n < blade_.node_count(); ++n) {
     node_deformation_[n] = state.orientation[n] * blade_.nodes[n].orientation.transpose();
-    node_quaternion_[n] = Eigen::Quaterniond(node_deformation_[n]);
+    if (with_quaternions) node_quaternion_[n] = Eigen::Quaterniond(node_deformation_[n]);
   }
 }
 
@@ -130,7 +132,7 @@ Mat3 BladeAeroMap::deformation(const Along& a) const {
 void BladeAeroMap::place(int b, const BladeFrame& frame, const beam::BeamState& state, aero::Aero::Input& input) const {
   const int count = nodes_per_blade();
   const Mat3& t_gf = frame.orientation;
-  node_deformations(state);
+  node_deformations(state, true);
   for (int k = 0; k < count; ++k) {
     const AeroNode& a = aero_nodes_[k];
     const auto c = static_cast<Eigen::Index>(b * count + k);
@@ -148,15 +150,21 @@ void BladeAeroMap::distribute(int b, const BladeFrame& frame, const beam::BeamSt
                               const aero::Aero::Output& output, std::vector<Vec6>& node_loads) const {
   const int count = nodes_per_blade();
   const Mat3 t_fg = frame.orientation.transpose();
-  node_deformations(state);
+  node_deformations(state, false);
+  // The aero loads per unit span into f once per aero node, not at every quadrature point.
+  for (int k = 0; k < count; ++k) {
+    const auto c = static_cast<Eigen::Index>(b * count + k);
+    force_f_.col(k) = t_fg * output.force_N_m.col(c);
+    moment_f_.col(k) = t_fg * output.moment_N_m_m.col(c);
+  }
   for (Vec6& l : node_loads) l.setZero();
   for (const QuadraturePoint& q : quadrature_) {
-    const auto c0 = static_cast<Eigen::Index>(b * count + q.aero_lower);
+    const int k = q.aero_lower;
     const double x = q.aero_fraction;
-    const Vec3 f = t_fg * ((1.0 - x) * output.force_N_m.col(c0) + x * output.force_N_m.col(c0 + 1));
-    const Vec3 m = t_fg * ((1.0 - x) * output.moment_N_m_m.col(c0) + x * output.moment_N_m_m.col(c0 + 1));
-    const AeroNode& lo = aero_nodes_[q.aero_lower];
-    const AeroNode& hi = aero_nodes_[q.aero_lower + 1];
+    const Vec3 f = (1.0 - x) * force_f_.col(k) + x * force_f_.col(k + 1);
+    const Vec3 m = (1.0 - x) * moment_f_.col(k) + x * moment_f_.col(k + 1);
+    const AeroNode& lo = aero_nodes_[k];
+    const AeroNode& hi = aero_nodes_[k + 1];
     const int n = q.segment;
     const Vec3 arm = position(state, q.at) + node_deformation_[n] * ((1.0 - x) * lo.offset_m + x * hi.offset_m) - state.position_m[n];
     node_loads[n].head<3>() += q.weight_m * f;

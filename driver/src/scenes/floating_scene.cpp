@@ -144,10 +144,6 @@ Schema floating_scene_schema() {
   });
 }
 
-bool is_floating_scene(const std::filesystem::path& deck) {
-  return io::load_deck(deck).root.find("structure") != nullptr;
-}
-
 RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress) {
   const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), request.deck_path);
   multibody::Params structure = structure_params(deck.section("structure"));

@@ -13,8 +13,6 @@
 namespace fowtsim::driver {
 
 io::Schema floating_scene_schema();
-// True if the YAML deck's top level holds a `structure` mapping.
-bool is_floating_scene(const std::filesystem::path& deck);
 RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress);
 
 }  // namespace fowtsim::driver

@@ -106,10 +106,6 @@ Schema platform_scene_schema() {
   });
 }
 
-bool is_platform_scene(const std::filesystem::path& deck) {
-  return io::load_deck(deck).root.find("platform_motion") != nullptr;
-}
-
 RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& progress) {
   const io::ValidatedDeck deck = io::read_deck(platform_scene_schema(), request.deck_path);
   const Trajectory trajectory = read_trajectory(deck.section("platform_motion"));

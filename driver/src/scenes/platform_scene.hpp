@@ -10,8 +10,6 @@
 namespace fowtsim::driver {
 
 io::Schema platform_scene_schema();
-// True if the YAML deck's top level holds a `platform_motion` mapping.
-bool is_platform_scene(const std::filesystem::path& deck);
 RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& progress);
 
 }  // namespace fowtsim::driver

@@ -113,7 +113,7 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
       if (progress) progress(t, t_max);
     }
   } catch (const std::exception& e) {  // numerical trouble, or a failing external controller
-    outputs.finish({elapsed(), std::string("failed: ") + e.what(), t});
+    outputs.finish({elapsed(), std::string("failed: ") + e.what(), t, {}});
     throw;
   }
   report.wall_s = elapsed();

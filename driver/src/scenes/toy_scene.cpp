@@ -128,13 +128,13 @@ RunReport run_toy_scene(const io::ValidatedDeck& deck, const RunRequest& request
       if (progress) progress(scheduler.time_s(), settings.t_max_s);
     }
   } catch (const NumericalError& e) {
-    outputs.finish({elapsed(), std::string("failed: ") + e.what(), scheduler.time_s()});
+    outputs.finish({elapsed(), std::string("failed: ") + e.what(), scheduler.time_s(), {}});
     throw;
   }
   report.wall_s = elapsed();
   report.simulated_s = scheduler.time_s();
   report.large_steps = scheduler.large_step();
-  outputs.finish({report.wall_s, "completed", report.simulated_s});
+  outputs.finish({report.wall_s, "completed", report.simulated_s, {}});
   return report;
 }
 
