@@ -36,7 +36,7 @@ TEST_CASE("identical tables pass with zero error and unit correlation", "[unit][
 }
 
 TEST_CASE("one channel off by 1 % fails alone, with the metrics of a 1 % error", "[unit][compare]") {
-  const ComparisonReport r = compare_tables(sine_table(0.1), sine_table(0.1, 1.01), {{1e-3, 1e-9}, {}, {}});
+  const ComparisonReport r = compare_tables(sine_table(0.1), sine_table(0.1, 1.01), {.default_tolerance = {1e-3, 1e-9}});
   CHECK_FALSE(r.pass());
   CHECK(r.channels[0].pass);
   CHECK_FALSE(r.channels[1].pass);
@@ -46,7 +46,7 @@ TEST_CASE("one channel off by 1 % fails alone, with the metrics of a 1 % error",
 
 TEST_CASE("a test on a finer time grid is interpolated onto the reference samples", "[unit][compare]") {
   // Linear interpolation of sin on a 0.01 s grid errs by at most h²/8 = 1.25e-5.
-  const ComparisonReport r = compare_tables(sine_table(0.1), sine_table(0.01), {{0.0, 2e-5}, {}, {}});
+  const ComparisonReport r = compare_tables(sine_table(0.1), sine_table(0.01), {.default_tolerance = {0.0, 2e-5}});
   CHECK(r.pass());
   CHECK(r.channels[0].max_abs_error < 1.25e-5);
   CHECK(r.samples == 101);
@@ -67,7 +67,7 @@ TEST_CASE("requested channels that are missing fail; unrequested extras are only
 TEST_CASE("a NaN in the test fails the channel", "[unit][compare]") {
   auto test = sine_table(0.1);
   test.columns[1][5] = NAN;
-  CHECK_FALSE(compare_tables(sine_table(0.1), test, {{1.0, 1.0}, {}, {}}).channels[0].pass);
+  CHECK_FALSE(compare_tables(sine_table(0.1), test, {.default_tolerance = {1.0, 1.0}}).channels[0].pass);
 }
 
 TEST_CASE("tables with no common time window are an error", "[unit][compare]") {

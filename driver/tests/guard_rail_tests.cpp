@@ -151,6 +151,24 @@ TEST_CASE("output names: fowtsim turbulence -o tb.bts writes tb.bts and tb.h5", 
   CHECK(std::filesystem::exists(dir / "tb.h5"));
   CHECK_FALSE(std::filesystem::exists(dir / "tb.bts.bts"));
   CHECK_FALSE(std::filesystem::exists(dir / "tb.bts.h5"));
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    CHECK(e.path().filename().string().find(".running") == std::string::npos);
+
+  // A write that fails (here the HDF5's temporary name is taken by a folder) leaves the field
+  // written before untouched (a 40-s field would be twice its size) and no temporary file behind.
+  const auto size_before = std::filesystem::file_size(dir / "tb.bts");
+  std::ofstream(deck) << R"(wind:
+  model: turbulent
+  speed_m_s: 12.0
+  reference_height_m: 90.0
+  turbulence: {ny: 4, nz: 4, width_m: 40.0, height_m: 40.0, dt_s: 0.5, duration_s: 40.0, seed: 7}
+)";
+  std::filesystem::create_directories(dir / "tb.running.h5" / "blocker");
+  std::FILE* sink2 = std::tmpfile();
+  CHECK_THROWS(run_turbulence_command(deck, dir / "tb", sink2));
+  std::fclose(sink2);
+  CHECK(std::filesystem::file_size(dir / "tb.bts") == size_before);
+  CHECK_FALSE(std::filesystem::exists(dir / "tb.running.bts"));
 }
 
 TEST_CASE("output names: a BeamDyn driver input writes runs/bd_driver.h5, not runs/.h5", "[verification][run]") {

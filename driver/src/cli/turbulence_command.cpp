@@ -44,8 +44,21 @@ int run_turbulence_command(const std::filesystem::path& deck_path, const std::op
                                               "ABC"[static_cast<int>(params.turbulence.category)], params.speed_m_s,
                                               params.reference_height_m, params.turbulence.seed);
   const io::TurbSimField field = to_turbsim(g.field, description);
-  io::write_turbsim_bts(base.string() + ".bts", field);
-  io::write_turbsim_hdf5(base.string() + ".h5", field, params.turbulence.seed);
+  // Written under temporary names and renamed only when both are complete, as run outputs are: a
+  // failed write never leaves a truncated field where a good one was.
+  const std::filesystem::path bts = base.string() + ".bts", h5 = base.string() + ".h5";
+  const std::filesystem::path bts_running = running_path(bts), h5_running = running_path(h5);
+  try {
+    io::write_turbsim_bts(bts_running, field);
+    io::write_turbsim_hdf5(h5_running, field, params.turbulence.seed);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(bts_running, ignored);
+    std::filesystem::remove(h5_running, ignored);
+    throw;
+  }
+  std::filesystem::rename(bts_running, bts);
+  std::filesystem::rename(h5_running, h5);
 
   fmt::print(out, "── fowtsim turbulence ─────────────────────────────────\n");
   fmt::print(out, "  field            {}×{} points, {} steps of {} s ({})\n", g.field.ny, g.field.nz, g.field.nt, g.field.dt_s, description);

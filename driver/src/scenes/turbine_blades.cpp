@@ -38,6 +38,9 @@ Schema blades_schema() {
                                            .doc("factor on every sectional stiffness (1000: the stiff-blade check)")});
   fields.push_back({"gauges_eta", Schema::sequence(Schema::number().at_least(0.0).at_most(1.0)).max_items(9).optional()
                                       .doc("span gauges: arclength fractions for Spn<k>FL/ML{x,y,z}b<b> (internal loads, blade frame)")});
+  fields.push_back({"nodal_deflections", Schema::boolean().default_value(false)
+                                             .doc("write every node's deflection B<b>N<nnn>_TD{x,y,z}r (BeamDyn's nodal names, root "
+                                                  "frame r, from the undeformed node): the input of proper orthogonal modes (fowtsim post --pom)")});
   fields.push_back({"induction", Schema::choice({"large_step", "small_step"}).default_value("large_step")
                                      .doc("BEM inductions solved once per large step and held over its small steps "
                                           "(loads follow the blade motion at every small step), or solved at every small step")});
@@ -120,6 +123,7 @@ TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Mod
     throw InputError({"floating", std::nullopt, "blades.substeps", "1 with single_rate"},
                      where(deck, "blades.substeps") + ": single_rate coupling takes one blade step per large step");
   if (b.has("gauges_eta")) gauges_eta_ = b.numbers("gauges_eta");
+  nodal_deflections_ = b.boolean("nodal_deflections");
   const std::string how = b.string("start");
   start_ = how == "static" ? FlexibleRotor::Start::static_loads
            : how == "centrifugal" ? FlexibleRotor::Start::centrifugal
@@ -257,6 +261,15 @@ std::vector<ChannelInfo> TurbineBlades::channels() const {
     for (int i = 0; i < 3; ++i)
       c.push_back({fmt::format("B{}TipTD{}r", b, axes[i]), "m", fmt::format("BeamDyn: blade {} tip deflection, root frame", b), "blades"});
     c.push_back({fmt::format("BldPitchAct{}", b), "deg", fmt::format("blade {} pitch after the actuator", b), "blades"});
+    if (nodal_deflections_) {
+      const beam::BeamModel& model = rotor_.params().blade;
+      for (int n = 0; n < model.node_count(); ++n)
+        for (int i = 0; i < 3; ++i)
+          c.push_back({fmt::format("B{}N{:03d}_TD{}r", b, n + 1, axes[i]), "m",
+                       fmt::format("BeamDyn: blade {} node {} (eta {:.4f}) deflection along {}_r", b, n + 1,
+                                   model.nodes[n].s_m / model.length_m, axes[i]),
+                       "blades"});
+    }
     for (std::size_t g = 0; g < gauges_eta_.size(); ++g) {
       for (int i = 0; i < 3; ++i)
         c.push_back({fmt::format("Spn{}FL{}b{}", g + 1, axes[i], b), "kN",
@@ -300,6 +313,12 @@ void TurbineBlades::channel_values(std::span<double> out) const {
     for (int i = 0; i < 3; ++i) out[k++] = root[3 + i];
     for (int i = 0; i < 3; ++i) out[k++] = o.tip_displacement_m[i];
     out[k++] = st.pitch_rad[b] * kRadToDeg;
+    if (nodal_deflections_) {
+      for (int n = 0; n < model.node_count(); ++n) {
+        const Vec3 d = s.position_m[n] - model.nodes[n].position_m;
+        for (int i = 0; i < 3; ++i) out[k++] = d[i];
+      }
+    }
     for (const double eta : gauges_eta_) {
       const Vec6 load = beam::section_load_at(model, s, eta);
       for (int i = 0; i < 6; ++i) out[k++] = load[i] / 1e3;

@@ -87,6 +87,7 @@ class TurbineBlades {
   int substeps_ = 4;
   FlexibleRotor::Start start_ = FlexibleRotor::Start::static_loads;
   std::vector<double> gauges_eta_;  // span gauges (arclength fractions)
+  bool nodal_deflections_ = false;  // B<b>N<nnn>_TD{x,y,z}r channels
   FlexibleRotor::HubLoad held_;
   SpinState spin_before_;                         // fast spin at the start of the last step
   SpinProfile profile_;
