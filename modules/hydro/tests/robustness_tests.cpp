@@ -7,6 +7,7 @@
 
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/rotation.hpp"
+#include "fowtsim/core/rotation_vector.hpp"
 #include "fowtsim/hydro/benchmarks.hpp"
 #include "fowtsim/hydro/oc3.hpp"
 #include "test_members.hpp"
@@ -96,3 +97,28 @@ TEST_CASE("added linear terms: OC3 yaw spring and damping", "[unit][hydro]") {
   CHECK(f[2] == Approx(1.3e5 * 0.1).epsilon(1e-14));
   CHECK(f[5] == Approx(-9.834e7 * 0.1 - 1.3e7 * 0.05).epsilon(1e-13));
 }
+
+TEST_CASE("added linear terms at 30 deg pitch and yaw together: the true angular velocity, the Euler angles", "[unit][hydro]") {
+  // Intent (DESIGN §3, large angles exact): the damping acts on ω in g, not on the Euler angle
+  // rates, which differ from it once two angles are large; the stiffness acts on the Euler 1-2-3
+  // angles as OpenFAST's AddCLin does on PtfmRoll/Pitch/Yaw.
+  Params p = oc3_hywind_params();
+  p.added_damping(3, 3) = p.added_damping(4, 4) = 2e6;  // roll and pitch damping too, to see every axis
+  Hydro::Input in = make_input(p);
+  const double deg = std::numbers::pi / 180.0;
+  const Vec3 angles(0.0, 30.0 * deg, 30.0 * deg);
+  in.platform.orientation = euler123_to_matrix(angles);
+  in.platform.angular_velocity_rad_s = Vec3(0.02, -0.01, 0.05);  // body frame
+  const Vec3 omega_g = in.platform.orientation * in.platform.angular_velocity_rad_s;
+  const Vec6 f = Hydro::outputs(p, in, {}).added_linear;
+  CHECK(f[3] == Approx(-2e6 * omega_g.x()).epsilon(1e-13));
+  CHECK(f[4] == Approx(-2e6 * omega_g.y()).epsilon(1e-13));
+  CHECK(f[5] == Approx(-9.834e7 * 30.0 * deg - 1.3e7 * omega_g.z()).epsilon(1e-13));
+  // The Euler rates of the same motion (finite difference of the angles, 1e-7 s: truncation
+  // ~1e-9 relative) differ from ω_g by more than 10 % here, so the check above tells them apart.
+  const double h = 1e-7;
+  const Mat3 later = in.platform.orientation * rotation_matrix(Vec3(h * in.platform.angular_velocity_rad_s));
+  const Vec3 euler_rates = (matrix_to_euler123(later) - angles) / h;
+  CHECK(std::abs(euler_rates.z() - omega_g.z()) > 0.1 * std::abs(omega_g.z()));
+}
+
