@@ -89,11 +89,16 @@ beam::ReferenceLine beamdyn_reference_line(const std::vector<Vec3>& kp, const st
       [=](double z) { return pt(xi_of(z)); }, z0, z1);
 }
 
+beam::BeamDefinition beamdyn_definition(const io::BeamDynPrimary& primary, const io::BeamDynBlade& blade) {
+  beam::BeamDefinition d{beamdyn_line(primary), {}};
+  for (const io::BeamDynStation& st : blade.stations) d.stations.push_back({st.eta, st.stiffness, st.mass});
+  if (blade.damp_type == 2) unsupported(blade.file, "damp_type", "modal damping (2) is not supported; use 0 or 1");
+  if (blade.damp_type == 1) d.stiffness_damping = blade.mu;
+  return d;
+}
+
 BeamDynSetup beamdyn_setup(const io::BeamDynCase& bd) {
-  BeamDynSetup s{.definition = {beamdyn_line(bd.primary), {}}};
-  for (const io::BeamDynStation& st : bd.blade.stations) s.definition.stations.push_back({st.eta, st.stiffness, st.mass});
-  if (bd.blade.damp_type == 2) unsupported(bd.blade.file, "damp_type", "modal damping (2) is not supported; use 0 or 1");
-  if (bd.blade.damp_type == 1) s.definition.stiffness_damping = bd.blade.mu;
+  BeamDynSetup s{.definition = beamdyn_definition(bd.primary, bd.blade)};
   s.root_orientation0 = bd.driver.glb_dcm.transpose();
   s.root_position_m = bd.driver.glb_pos_m;
   s.angular_velocity_rad_s = bd.driver.root_angular_velocity_rad_s;

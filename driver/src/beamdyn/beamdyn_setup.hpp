@@ -38,6 +38,10 @@ struct BeamDynSetup {
 // Throws InputError naming the BeamDyn file and key for what cannot be represented.
 BeamDynSetup beamdyn_setup(const io::BeamDynCase& bd);
 
+// The beam of a BeamDyn primary file and its blade file: reference line, sections, stiffness-
+// proportional damping (damp_type 1; modal damping 2 is refused).
+beam::BeamDefinition beamdyn_definition(const io::BeamDynPrimary& primary, const io::BeamDynBlade& blade);
+
 // BeamDyn's reference line through key points (z increasing): per coordinate and for the twist a
 // least-squares polynomial in z of total degree `degree`, end points met exactly; section frame
 // turned by −twist about the tangent. Throws InputError (variable "kp_zr") if z does not increase.
