@@ -61,10 +61,9 @@ class BladeAeroMap {
   };
   Vec3 position(const beam::BeamState& state, const Along& a) const;
   Vec3 velocity(const beam::BeamState& state, const Along& a) const;
-  // The deformation rotation R R0ᵀ of every node of a state, as matrices (and quaternions for
-  // interpolation in place), once per call of place/distribute (workspace: sized at
-  // construction, no allocation).
-  void node_deformations(const beam::BeamState& state, bool with_quaternions) const;
+  // The deformation rotation R R0ᵀ of every node of a state, once per call of place/distribute
+  // (workspace: sized at construction, no allocation).
+  void node_deformations(const beam::BeamState& state) const;
   Mat3 deformation(const Along& a) const;  // interpolated from node_deformations()
   Along along(double s) const;
 
@@ -73,7 +72,6 @@ class BladeAeroMap {
   std::vector<AeroNode> aero_nodes_;
   std::vector<QuadraturePoint> quadrature_;
   mutable std::vector<Mat3> node_deformation_;
-  mutable std::vector<Eigen::Quaterniond> node_quaternion_;
   mutable Eigen::Matrix3Xd force_f_, moment_f_;  // distribute: one blade's aero loads per unit span in f
 };
 

@@ -37,7 +37,9 @@ class Residual {
     ++evaluations;
     const double s = std::sin(phi_c), c = std::cos(phi_c);
     const double sin_phi = sx_ * s, cos_phi = sy_ * c;  // physical φ
-    const AirfoilCoefficients k = polar_.evaluate(std::atan2(sin_phi, cos_phi) - in_.theta_rad);
+    // φ = atan2(sin φ, cos φ) in closed form: the reflections of φ_c (the polar wraps α itself).
+    const double phi = sy_ > 0.0 ? sx_ * phi_c : sx_ * (kPi - phi_c);
+    const AirfoilCoefficients k = polar_.evaluate(phi - in_.theta_rad);
     const double cn = k.cl * cos_phi + (params_.drag_in_axial_induction ? k.cd * sin_phi : 0.0);
     const double ct = k.cl * sin_phi - (params_.drag_in_tangential_induction ? k.cd * cos_phi : 0.0);
     Value v;
@@ -224,7 +226,10 @@ SectionSolution section_with_induction(const SectionInflow& in, const Polar& pol
   s.alpha_rad = wrap_angle(s.phi_rad - in.theta_rad);
   s.relative_speed_m_s = std::hypot(u, v);
   s.coefficients = polar.evaluate(s.alpha_rad);
-  const double sp = std::sin(s.phi_rad), cp = std::cos(s.phi_rad);
+  // sin φ, cos φ of the velocity triangle itself (φ = atan2(u, v)); (0, 1) in still air, where
+  // atan2 gives φ = 0.
+  const double w = s.relative_speed_m_s;
+  const double sp = w > 0.0 ? u / w : 0.0, cp = w > 0.0 ? v / w : 1.0;
   s.cn = s.coefficients.cl * cp + s.coefficients.cd * sp;
   s.ct = s.coefficients.cl * sp - s.coefficients.cd * cp;
   if (!std::isfinite(s.phi_rad) || !std::isfinite(s.relative_speed_m_s) || !std::isfinite(s.cn) ||

@@ -93,4 +93,30 @@ void BlockTridiagonal::solve_in_place(VecX& b) const {
   }
 }
 
+void BlockTridiagonal::solve_in_place(VecX& b1, VecX& b2) const {
+  const int n = blocks();
+  using Pair = Eigen::Matrix<double, 6, 2>;
+  const auto pair = [&](int i) {
+    Pair p;
+    p << b1.segment<6>(6 * i), b2.segment<6>(6 * i);
+    return p;
+  };
+  const auto store = [&](int i, const Pair& p) {
+    b1.segment<6>(6 * i) = p.col(0);
+    b2.segment<6>(6 * i) = p.col(1);
+  };
+  Pair previous = pair(0);
+  for (int i = 1; i < n; ++i) {
+    previous = pair(i) - lower_[i - 1] * previous;
+    store(i, previous);
+  }
+  Pair next = Pair::Zero();
+  for (int i = n - 1; i >= 0; --i) {
+    Pair rhs = pair(i);
+    if (i + 1 < n) rhs -= upper_[i] * next;
+    next = pivot_inverses_[i] * rhs;
+    store(i, next);
+  }
+}
+
 }  // namespace fowtsim::beam

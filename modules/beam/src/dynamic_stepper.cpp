@@ -102,7 +102,6 @@ AffineRootLoad DynamicStepper::prepare(const BeamInput& input, const FrameAccele
                            "singular step matrix (zero mass or inertia?)");
   }
   const BlockTridiagonal& lhs = matrix_rebuilt_ ? rebuilt_ : state.step_matrix.factored;
-  lhs.solve_in_place(solution_);
 
   // The root load at the balance time is the root section's share of the residual at the trial
   // motion w + (c, k)·Δa (root_residual_load), affine in Δa = solution + s·per_unit.
@@ -111,7 +110,7 @@ AffineRootLoad DynamicStepper::prepare(const BeamInput& input, const FrameAccele
   if (coupled) {
     frame_acceleration_load(model_, state, w_stiffness_, direction.acceleration_m_s2,
                             direction.angular_acceleration_rad_s2, per_unit_);
-    lhs.solve_in_place(per_unit_);
+    lhs.solve_in_place(solution_, per_unit_);
     // The trial vectors are reused as scratch below and restored by finish() from v0, a0.
     const Vec6 base = root_residual_load(model_, state, w_damping_, w_stiffness_);
     v1_ = w_damping_ + weights_.damping * solution_;
@@ -121,6 +120,7 @@ AffineRootLoad DynamicStepper::prepare(const BeamInput& input, const FrameAccele
     q_ = w_stiffness_ + weights_.stiffness * per_unit_;
     root.per_unit = root_residual_load(model_, state, v1_, q_) - base;
   } else {
+    lhs.solve_in_place(solution_);
     per_unit_.setZero();
     v1_ = w_damping_ + weights_.damping * solution_;
     q_ = w_stiffness_ + weights_.stiffness * solution_;

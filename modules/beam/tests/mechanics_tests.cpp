@@ -76,6 +76,13 @@ TEST_CASE("block-tridiagonal factor and solve match a dense LU", "[unit][beam]")
   REQUIRE(a.factor());
   a.solve_in_place(x);
   CHECK((x - dense.lu().solve(b)).norm() < 1e-12 * x.norm());  // well-conditioned: rounding only
+  // Two right-hand sides at once give each one's solution (the same products, rounding only).
+  const VecX c = VecX::Random(6 * n);
+  VecX x1 = b, x2 = c, xc = c;
+  a.solve_in_place(x1, x2);
+  a.solve_in_place(xc);
+  CHECK((x1 - x).norm() < 1e-14 * x.norm());
+  CHECK((x2 - xc).norm() < 1e-14 * xc.norm());
 }
 
 TEST_CASE("section loads balance in force and moment and vanish under rigid motion",

@@ -41,6 +41,9 @@ class BlockTridiagonal {
   // Returns false if a pivot block is singular.
   bool factor();
   void solve_in_place(VecX& b) const;
+  // Two right-hand sides at once: the same result as two calls, the block products of the two
+  // interleaved (independent work for the pipeline in a solve that is otherwise one chain).
+  void solve_in_place(VecX& b1, VecX& b2) const;
 
  private:
   std::vector<Mat6> diag_, upper_, lower_;
