@@ -18,6 +18,10 @@
 #include "run/option_checks.hpp"
 #include "run/run_scene.hpp"
 #include "cli/turbulence_command.hpp"
+#include "cli/post_command.hpp"
+#include "cli/post_config.hpp"
+#include "cli/sweep_command.hpp"
+#include "sweep/sweep_spec.hpp"
 #include "decks/wind_deck.hpp"
 #include "scenes/beam_scene.hpp"
 #include "scenes/floating_scene.hpp"
@@ -153,6 +157,58 @@ int main(int argc, char** argv) {
                          "output path: writes BASE.bts and BASE.h5; a given .bts or .h5 extension is replaced, not "
                          "appended (-o tb.bts → tb.bts, tb.h5; default runs/<deck name>)");
 
+  PostOptions post_options;
+  std::vector<std::string> post_files, post_outputs;
+  std::vector<double> post_window;
+  std::string del_config, residue = "half", plot_dir, lifetime_spec;
+  auto* post_command = app.add_subcommand("post", "statistics, DELs, spectra and proper orthogonal modes of output files (.h5, .out, .outb)");
+  post_command->add_option("files", post_files, "run outputs; one table row per file and channel")->check(CLI::ExistingFile);
+  post_command->add_option("--channels", post_options.channels, "channels to tabulate (default: all)")->delimiter(',');
+  post_command->add_option("--window", post_window, "analyse only T0 T1 [s] (e.g. 200 800 after the start-up transient)")->expected(2);
+  post_command->add_option("--del-config", del_config,
+                   "YAML: per channel wohler_exponent, ultimate_load (Goodman), goodman_fixed_mean; `default` for all; "
+                   "equivalent_frequency_hz (default 1)")
+      ->check(CLI::ExistingFile);
+  post_command->add_option("--residue", residue, "rainflow residue as half cycles (ASTM, MLife; default) or full cycles")
+      ->check(CLI::IsMember({"half", "full"}));
+  post_command->add_flag("--psd", post_options.psd, "Welch PSD (Hann, 50 % overlap) of the tabulated channels");
+  post_command->add_option("--psd-channels", post_options.psd_channels, "Welch PSD of these channels instead")->delimiter(',');
+  post_command->add_option("--segment", post_options.segment_s, "Welch segment length [s] (default 100: Δf = 0.01 Hz)")
+      ->check(positive("a positive number of seconds"));
+  post_command->add_option("--pom", post_options.pom_pattern,
+                   "proper orthogonal modes of the channels matching this glob (nodal deflections, e.g. 'B1N*TDxr')");
+  post_command->add_flag("--pom-remove-means", post_options.pom_remove_means,
+                 "subtract each node's mean before the SVD (the seed decomposes the deflections as they are)");
+  post_command->add_option("-o,--output", post_outputs, "write the results to OUT.h5 and/or OUT.csv (repeat -o for both)");
+  post_command->add_option("--plot", plot_dir, "write PNG plots to DIR with tools/plot (needs Debian's python3-matplotlib)");
+  post_command->add_option("--lifetime", lifetime_spec,
+                   "lifetime DELs over a wind-speed distribution: YAML with runs (file, wind_speed_m_s), "
+                   "wind_distribution, design_life_years, bin_width_m_s and a fatigue section (see modules/post/README.md)")
+      ->check(CLI::ExistingFile);
+
+  SweepRequest sweep_request;
+  std::string sweep_output_dir;
+  int sweep_max_running = 0;
+  bool sweep_list = false, sweep_slurm = false, sweep_collect = false;
+  auto* sweep = app.add_subcommand("sweep", "design-load-case sweep: expand a sweep spec into cases, run them locally or "
+                                            "as a Slurm job array (resumable), and collect the load table");
+  sweep->add_option("spec", sweep_request.spec, "sweep spec (YAML; driver/src/sweep/README.md)")->required()->check(CLI::ExistingFile);
+  auto* sweep_list_flag = sweep->add_flag("--list", sweep_list, "print the expanded cases and do nothing else");
+  sweep->add_option("-j,--jobs", sweep_request.jobs, "local processes at once (default 1)")->check(positive("a positive whole number"));
+  auto* sweep_slurm_flag = sweep->add_flag("--slurm", sweep_slurm, "write the case decks and a job-array script and submit it with sbatch");
+  auto* sweep_collect_flag = sweep->add_flag("--collect", sweep_collect, "write the load table from the cases that have finished");
+  sweep->add_option("--output-dir", sweep_output_dir, "output folder (default: the spec's sweep.output_dir, or runs/sweeps/<name>)");
+  sweep->add_option("--partition", sweep_request.slurm.partition, "Slurm partition (--slurm)");
+  sweep->add_option("--time", sweep_request.slurm.time_limit, "Slurm time limit per array task, e.g. 02:00:00 (--slurm)");
+  sweep->add_option("--cases-per-task", sweep_request.slurm.cases_per_task,
+                    "cases run one after the other in each array task, for short cases (--slurm; default 1)")
+      ->check(positive("a positive whole number"));
+  sweep->add_option("--max-running", sweep_max_running, "array tasks running at once: --array=0-N%M (--slurm)")
+      ->check(positive("a positive whole number"));
+  sweep->add_flag("--dry-run", sweep_request.dry_run, "with --slurm: write everything and print the sbatch command, submit nothing");
+  sweep_list_flag->excludes(sweep_slurm_flag)->excludes(sweep_collect_flag);
+  sweep_slurm_flag->excludes(sweep_collect_flag);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -162,10 +218,13 @@ int main(int argc, char** argv) {
     fmt::print("Toy coupled-oscillator scene:\n{}\nBeam scene (a deck with a top-level `beam`):\n{}\n"
                "Platform-loads scene (a deck with a top-level `platform_motion`):\n{}\n"
                "Floating-turbine scene (a deck with a top-level `structure`):\n{}\n"
-               "Turbulence deck (`fowtsim turbulence DECK`):\n{}",
+               "Turbulence deck (`fowtsim turbulence DECK`):\n{}\nFatigue configuration (`fowtsim post --del-config FILE`):\n{}\n"
+               "Lifetime specification (`fowtsim post --lifetime FILE`):\n{}",
                io::describe_schema(scene_schema()), io::describe_schema(beam_scene_schema()),
                io::describe_schema(platform_scene_schema()), io::describe_schema(floating_scene_schema()),
-               io::describe_schema(io::Schema::map({{"wind", wind_schema()}})));
+               io::describe_schema(io::Schema::map({{"wind", wind_schema()}})), io::describe_schema(fatigue_config_schema()),
+               io::describe_schema(lifetime_spec_schema()));
+    fmt::print("\nSweep spec (`fowtsim sweep SPEC`):\n{}", io::describe_schema(sweep::sweep_spec_schema()));
     return 0;
   }
   if (app.get_subcommands().empty()) {
@@ -187,6 +246,25 @@ int main(int argc, char** argv) {
     if (*compare) {
       return compare_command(ref, test, channels, rtol_opt->count() ? std::optional(rtol) : std::nullopt,
                              atol_opt->count() ? std::optional(atol) : std::nullopt, tolerance_file, window, stats);
+    }
+    if (*post_command) {
+      for (const std::string& f : post_files) post_options.files.emplace_back(f);
+      for (const std::string& o : post_outputs) post_options.outputs.emplace_back(o);
+      if (post_window.size() == 2) post_options.window = post::TimeWindow{post_window[0], post_window[1]};
+      if (!del_config.empty()) post_options.del_config = del_config;
+      post_options.residue = residue == "full" ? post::ResidueCounting::full_cycles : post::ResidueCounting::half_cycles;
+      if (!plot_dir.empty()) post_options.plot_dir = plot_dir;
+      if (!lifetime_spec.empty()) post_options.lifetime_spec = lifetime_spec;
+      return run_post_command(post_options, stdout);
+    }
+    if (*sweep) {
+      sweep_request.action = sweep_list      ? SweepRequest::Action::list
+                             : sweep_slurm   ? SweepRequest::Action::slurm
+                             : sweep_collect ? SweepRequest::Action::collect
+                                             : SweepRequest::Action::run_local;
+      if (!sweep_output_dir.empty()) sweep_request.output_dir = sweep_output_dir;
+      if (sweep_max_running > 0) sweep_request.slurm.max_running = sweep_max_running;
+      return run_sweep_command(sweep_request, stdout);
     }
     if (*turbulence) return run_turbulence_command(wind_deck, wind_out.empty() ? std::nullopt : std::optional<std::filesystem::path>(wind_out), stdout);
     if (*verify) return verify_command(cases, shared_dir);

@@ -10,6 +10,8 @@ fowtsim_packages=(
   libfmt-dev libcli11-dev catch2   # formatting, command line, tests
   libfftw3-dev pkgconf             # FFT synthesis of irregular seas and turbulence
   python3-h5py python3-numpy       # proves outside tools read our HDF5 (regression tier)
+  python3-matplotlib               # tools/plot (`fowtsim post --plot`): the plots engineers already read
+  slurm-wlm munge                  # `fowtsim sweep --slurm` runs on a real single-node Slurm in the tests
 )
 
 fowtsim_install_missing_packages() {

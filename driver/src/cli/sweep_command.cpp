@@ -1,0 +1,205 @@
+#include "cli/sweep_command.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <csignal>
+
+#include <fmt/format.h>
+
+#include "run/interrupt.hpp"
+#include "sweep/case_expansion.hpp"
+#include "sweep/case_files.hpp"
+#include "sweep/case_outcome.hpp"
+#include "sweep/iec_presets.hpp"
+#include "sweep/load_table.hpp"
+#include "sweep/local_pool.hpp"
+#include "sweep/slurm_job.hpp"
+#include "sweep/sweep_spec.hpp"
+
+namespace fowtsim::driver {
+
+namespace {
+
+using namespace sweep;
+
+// The product goal of issue 14: 1000 ten-minute cases in one hour on 2 cores.
+constexpr double kGoalCases = 1000.0, kGoalCaseLength_s = 600.0, kGoalWall_s = 3600.0, kGoalCores = 2.0;
+constexpr double kGoalRealTimePerCore = kGoalCases * kGoalCaseLength_s / kGoalWall_s / kGoalCores;  // ≈ 83
+
+std::string clock_text(double seconds) {
+  const auto s = static_cast<long>(std::lround(std::max(seconds, 0.0)));
+  return s >= 3600 ? fmt::format("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60) : fmt::format("{}:{:02}", s / 60, s % 60);
+}
+
+std::string optional_number(const std::optional<double>& v, const char* format = "{:g}") {
+  return v ? fmt::format(fmt::runtime(format), *v) : "–";
+}
+
+void print_cases(std::FILE* out, const SweepSpec& spec, const std::vector<SweepCase>& cases) {
+  fmt::print(out, "sweep {}: {} cases over {} (each {} s: {} s transient + {} s analysed)\n", spec.name, cases.size(),
+             spec.base_deck.string(), spec.transient_s + spec.analysis_s, spec.transient_s, spec.analysis_s);
+  fmt::print(out, "{:<32} {:>7} {:>7} {:>11} {:>11} {:>6} {:>6}  {}\n", "case", "V m/s", "σ1 m/s", "wind seed", "wave seed", "Hs m",
+             "Tp s", "factors");
+  for (const SweepCase& c : cases) {
+    const LoadCaseGroup& g = spec.groups[c.group];
+    // σ1 of the normal turbulence model, what the generator draws for the operating presets.
+    const std::optional<double> sigma = g.preset.rfind("dlc1.", 0) == 0 && c.wind_speed_m_s
+                                            ? std::optional(ntm_sigma_m_s(spec.turbine.turbulence_class, *c.wind_speed_m_s))
+                                            : std::nullopt;
+    std::string factors = g.preset.empty() ? "" : g.preset;
+    for (const auto& [label, value] : c.factors) factors += (factors.empty() ? "" : " ") + label + "=" + value;
+    fmt::print(out, "{:<32} {:>7} {:>7} {:>11} {:>11} {:>6} {:>6}  {}\n", c.name, optional_number(c.wind_speed_m_s),
+               optional_number(sigma, "{:.3f}"), c.wind_seed ? std::to_string(*c.wind_seed) : "–",
+               c.wave_seed ? std::to_string(*c.wave_seed) : "–", optional_number(c.hs_m, "{:.3g}"), optional_number(c.tp_s, "{:.3g}"),
+               factors);
+  }
+}
+
+const char* case_end_word(int exit_code) {
+  if (exit_code == 0) return "ended  ";
+  if (exit_code == interrupted_exit_code(SIGINT) || exit_code == interrupted_exit_code(SIGTERM)) return "stopped";
+  return "FAILED ";
+}
+
+// Cases whose output is not `completed` for their current deck.
+std::vector<std::size_t> cases_to_run(const std::vector<SweepCase>& cases, const std::vector<std::string>& hashes,
+                                      const SweepLayout& layout) {
+  std::vector<std::size_t> pending;
+  for (std::size_t i = 0; i < cases.size(); ++i)
+    if (read_case_outcome(layout, cases[i].name, hashes[i]).state != CaseState::completed) pending.push_back(i);
+  return pending;
+}
+
+// Writes the table and prints where, and every case without a result with its exit code and reason.
+int finish_with_table(std::FILE* out, const SweepSpec& spec, const std::vector<SweepCase>& cases,
+                      const std::vector<std::string>& hashes, const SweepLayout& layout) {
+  const LoadTable table = build_load_table(spec, cases, hashes, layout);
+  write_load_table(table, layout.table_base());
+  std::size_t completed = 0;
+  for (const LoadTableRow& row : table.rows) completed += row.outcome.state == CaseState::completed;
+  fmt::print(out, "  cases            {} completed of {}\n", completed, table.rows.size());
+  for (const LoadTableRow& row : table.rows) {
+    if (row.outcome.state == CaseState::completed) continue;
+    fmt::print(out, "  {:<16} {}{}{}\n", state_name(row.outcome.state), row.case_->name,
+               row.outcome.exit_code ? fmt::format(" (exit {})", *row.outcome.exit_code) : "",
+               row.outcome.message.empty() ? "" : ": " + row.outcome.message);
+  }
+  for (const LifetimeRow& l : table.lifetime)
+    if (l.load)
+      fmt::print(out, "  lifetime DEL     {} (m = {}): {:.6g} {} over {} runs\n", l.channel.channel, l.channel.wohler_exponent,
+                 l.load->damage_equivalent_load, table.fatigue_units[static_cast<std::size_t>(&l - table.lifetime.data())], l.runs);
+  for (const std::string& note : table.notes) fmt::print(out, "  note             {}\n", note);
+  fmt::print(out, "  load table       {0}.csv, {0}.h5, {0}.md\n", layout.table_base().string());
+  return completed == table.rows.size() ? 0 : 1;
+}
+
+int run_local(std::FILE* out, const SweepRequest& request, const SweepSpec& spec, const std::vector<SweepCase>& cases,
+              const std::vector<std::string>& hashes, const SweepLayout& layout) {
+  const std::vector<std::size_t> pending = cases_to_run(cases, hashes, layout);
+  const double case_length_s = spec.transient_s + spec.analysis_s;
+  fmt::print(out, "── fowtsim sweep {} ─────────────────────────────────\n", spec.name);
+  fmt::print(out, "  cases            {} ({} completed earlier and skipped), {} to run in {} processes\n", cases.size(),
+             cases.size() - pending.size(), pending.size(), request.jobs);
+  std::vector<CaseCommand> commands;
+  for (const std::size_t i : pending) {
+    const std::string& name = cases[i].name;
+    std::filesystem::remove(layout.exit_code(name));
+    commands.push_back({name, {"run", layout.deck(name).string(), "-o", layout.output(name).string()}, layout.log(name), case_length_s});
+  }
+
+  const bool terminal = isatty(fileno(out)) != 0;
+  const InterruptHandlers handlers;
+  std::size_t completed_now = 0;
+  double completed_cpu_s = 0.0;
+  const PoolReport report = run_pool(
+      request.executable.empty() ? own_executable() : request.executable, commands, request.jobs,
+      [&](const CaseExit& e) {
+        write_exit_code(layout, e.name, e.exit_code);
+        if (e.exit_code != 0) return;
+        ++completed_now;
+        completed_cpu_s += e.cpu_s;
+      },
+      [&](const PoolProgress& p) {
+        const std::string line = fmt::format("{}/{} done, {} failed, {} running, {} queued, {} elapsed{}", p.done, commands.size(),
+                                             p.failed, p.running, p.queued, clock_text(p.elapsed_s),
+                                             p.eta_s >= 0 ? ", ETA " + clock_text(p.eta_s) : "");
+        // One line for the sweep on a terminal; a line per ended case in a log.
+        if (terminal)
+          fmt::print(out, "\r  {:<78}", line);
+        else if (!p.last_case.empty())
+          fmt::print(out, "  {} {} (exit {}): {}\n", case_end_word(p.last_exit_code), p.last_case, p.last_exit_code, line);
+        std::fflush(out);
+      });
+  if (terminal) fmt::print(out, "\n");
+  if (report.interrupted_by)
+    fmt::print(out, "  interrupted      by {}: finished cases are kept, the others run on the next `fowtsim sweep`\n",
+               signal_name(report.interrupted_by));
+  if (completed_now > 0) {
+    // Simulated seconds per wall second of the whole pool: what sizes a load basis on this machine.
+    const double throughput = static_cast<double>(completed_now) * case_length_s / report.wall_s;
+    const double per_process = throughput / std::min<double>(request.jobs, static_cast<double>(commands.size()));
+    fmt::print(out, "  throughput       {:.1f} simulated s per wall s ({} cases in {:.1f} s, {:.1f}× real time per process)\n",
+               throughput, completed_now, report.wall_s, per_process);
+    // Per CPU second the figure does not depend on what else runs on the machine.
+    const double per_cpu_second = static_cast<double>(completed_now) * case_length_s / completed_cpu_s;
+    fmt::print(out, "  CPU time         {:.1f} s: {:.1f} simulated s per CPU s\n", completed_cpu_s, per_cpu_second);
+    fmt::print(out, "  product goal     1000 ten-minute cases in 1 h on 2 cores = {:.0f}× real time per core: this sweep reaches "
+               "{:.2f}× of it per process, {:.2f}× per CPU second\n",
+               kGoalRealTimePerCore, per_process / kGoalRealTimePerCore, per_cpu_second / kGoalRealTimePerCore);
+  }
+  const int status = finish_with_table(out, spec, cases, hashes, layout);
+  return report.interrupted_by ? interrupted_exit_code(report.interrupted_by) : status;
+}
+
+int run_slurm(std::FILE* out, const SweepRequest& request, const SweepSpec& spec, const std::vector<SweepCase>& cases,
+              const std::vector<std::string>& hashes, const SweepLayout& layout) {
+  std::vector<std::string> names;
+  for (const std::size_t i : cases_to_run(cases, hashes, layout)) {
+    names.push_back(cases[i].name);
+    std::filesystem::remove(layout.exit_code(cases[i].name));
+  }
+  fmt::print(out, "── fowtsim sweep {} (Slurm) ─────────────────────────\n", spec.name);
+  fmt::print(out, "  cases            {} ({} completed earlier and skipped), {} to run\n", cases.size(), cases.size() - names.size(),
+             names.size());
+  if (names.empty()) return finish_with_table(out, spec, cases, hashes, layout);
+  const SlurmJob job = write_slurm_job(spec.name, layout, names, request.executable.empty() ? own_executable() : request.executable,
+                                       request.slurm);
+  std::string command;
+  for (const std::string& word : sbatch_command(job)) command += (command.empty() ? "" : " ") + word;
+  fmt::print(out, "  job array        {} tasks of {} case(s): {}\n", job.tasks, std::max(1, request.slurm.cases_per_task), job.script.string());
+  if (request.dry_run) {
+    fmt::print(out, "  dry run          submit with: {}\n", command);
+    return 0;
+  }
+  const std::string job_id = submit_slurm_job(job);
+  fmt::print(out, "  submitted        job {}; when it has run: fowtsim sweep {} --collect{}\n", job_id, request.spec.string(),
+             request.output_dir ? " --output-dir " + request.output_dir->string() : "");
+  return 0;
+}
+
+}  // namespace
+
+int run_sweep_command(const SweepRequest& request, std::FILE* out) {
+  SweepSpec spec = read_sweep_spec(request.spec);
+  if (request.output_dir) spec.output_dir = *request.output_dir;
+  const std::vector<SweepCase> cases = expand_cases(spec, read_base_deck_facts(spec.base_deck));
+  if (request.action == SweepRequest::Action::list) {
+    print_cases(out, spec, cases);
+    return 0;
+  }
+  const SweepLayout layout{spec.output_dir};
+  layout.create_directories();
+  const std::vector<std::string> hashes = write_case_decks(spec, cases, layout);
+  switch (request.action) {
+    case SweepRequest::Action::collect:
+      fmt::print(out, "── fowtsim sweep {} (collect) ───────────────────────\n", spec.name);
+      return finish_with_table(out, spec, cases, hashes, layout);
+    case SweepRequest::Action::slurm: return run_slurm(out, request, spec, cases, hashes, layout);
+    case SweepRequest::Action::run_local: return run_local(out, request, spec, cases, hashes, layout);
+    case SweepRequest::Action::list: break;
+  }
+  return 0;
+}
+
+}  // namespace fowtsim::driver

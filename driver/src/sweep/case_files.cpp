@@ -1,0 +1,156 @@
+#include "sweep/case_files.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <iterator>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "fowtsim/core/error.hpp"
+#include "scenes/beam_scene.hpp"
+#include "scenes/floating_scene.hpp"
+#include "scenes/platform_scene.hpp"
+#include "scenes/scene_schema.hpp"
+
+namespace fowtsim::driver::sweep {
+
+namespace fs = std::filesystem;
+
+void SweepLayout::create_directories() const {
+  for (const char* sub : {"decks", "cases", "logs", "slurm"}) fs::create_directories(root / sub);
+}
+
+namespace {
+
+// Overrides as nested mappings, keys in first-set order; a later value of a key replaces it.
+struct KeyTree {
+  std::string key;
+  std::optional<std::string> value;
+  std::vector<KeyTree> children;
+
+  KeyTree& child(const std::string& name) {
+    for (KeyTree& c : children)
+      if (c.key == name) return c;
+    children.push_back({name, std::nullopt, {}});
+    return children.back();
+  }
+};
+
+// Plain YAML scalars stay plain (numbers, words, paths); anything else is double-quoted.
+std::string yaml_scalar(const std::string& text) {
+  const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](unsigned char c) {
+    return std::isalnum(c) || c == '_' || c == '.' || c == '+' || c == '-' || c == '/';
+  });
+  if (plain) return text;
+  std::string quoted = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') quoted += '\\';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+void emit(const KeyTree& node, int depth, std::string& out) {
+  for (const KeyTree& c : node.children) {
+    out.append(static_cast<std::size_t>(2 * depth), ' ');
+    out += c.key;
+    out += ':';
+    if (c.value) {
+      out += ' ';
+      out += yaml_scalar(*c.value);
+      out += '\n';
+    } else {
+      out += "\n";
+      emit(c, depth + 1, out);
+    }
+  }
+}
+
+io::Schema schema_of_scene(const io::DeckNode& root) {
+  if (root.find("structure")) return floating_scene_schema();
+  if (root.find("platform_motion")) return platform_scene_schema();
+  if (root.find("beam")) return beam_scene_schema();
+  return scene_schema();
+}
+
+// A problem in a key the case deck sets is reported where the spec sets it (if it does), naming the case.
+io::DeckIssue relocate(io::DeckIssue issue, const SweepCase& c) {
+  for (auto it = c.overrides.rbegin(); it != c.overrides.rend(); ++it) {
+    if (it->key_path != issue.path) continue;
+    if (it->source.line > 0) issue.location = it->source;
+    break;
+  }
+  issue.hint = issue.hint.empty() ? "in case " + c.name : issue.hint + " (case " + c.name + ")";
+  return issue;
+}
+
+}  // namespace
+
+std::string case_deck_text(const SweepSpec& spec, const SweepCase& c, const fs::path& deck_dir) {
+  KeyTree tree;
+  for (const DeckOverride& o : c.overrides) {
+    KeyTree* node = &tree;
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t dot = o.key_path.find('.', start);
+      node = &node->child(o.key_path.substr(start, dot - start));
+      if (dot == std::string::npos) break;
+      node->value.reset();  // a mapping now, whatever was set there before
+      start = dot + 1;
+    }
+    node->children.clear();
+    node->value = o.yaml_value;
+  }
+  // Relative when the decks and the base deck share a top folder (the sweep folder can move with
+  // the project), absolute otherwise (no climb to the file-system root and down again).
+  const fs::path base = fs::absolute(spec.base_deck).lexically_normal(), decks = fs::absolute(deck_dir).lexically_normal();
+  const bool shared_top = std::next(base.begin()) != base.end() && std::next(decks.begin()) != decks.end() &&
+                          *std::next(base.begin()) == *std::next(decks.begin());
+  const fs::path include = shared_top ? base.lexically_relative(decks) : base;
+  std::string text = fmt::format(
+      "# Case {} of the sweep {} ({}), written by `fowtsim sweep`: the base deck with the keys below\n"
+      "# set over it. Rerun it alone with `fowtsim run THIS_FILE -o OUT.h5`.\n"
+      "include: {}\n",
+      c.name, spec.name, spec.spec_path.string(), yaml_scalar(include.generic_string()));
+  emit(tree, 0, text);
+  return text;
+}
+
+std::vector<std::string> write_case_decks(const SweepSpec& spec, const std::vector<SweepCase>& cases, const SweepLayout& layout) {
+  fs::create_directories(layout.root / "decks");
+  std::vector<std::string> hashes;
+  std::vector<io::DeckIssue> issues;
+  for (const SweepCase& c : cases) {
+    const fs::path path = layout.deck(c.name);
+    const std::string text = case_deck_text(spec, c, path.parent_path());
+    // An unchanged deck is left alone: a Slurm task may be reading it while --collect runs.
+    if (std::ifstream in(path, std::ios::binary); !in || std::string(std::istreambuf_iterator<char>(in), {}) != text) {
+      std::ofstream out(path, std::ios::binary | std::ios::trunc);
+      out << text;
+      if (!out) throw InputError({"sweep", std::nullopt, "output_dir", "a writable folder"}, "cannot write " + path.string());
+    }
+    try {
+      io::LoadedDeck loaded = io::load_deck(path);
+      hashes.push_back(loaded.hash);
+      const io::Schema schema = schema_of_scene(loaded.root);
+      io::validate(schema, std::move(loaded));
+    } catch (const io::DeckError& e) {
+      // A problem of the base deck itself is the same in every case: reported once.
+      for (const io::DeckIssue& issue : e.issues()) {
+        io::DeckIssue located = issue.location.file == path.string() ? relocate(issue, c) : issue;
+        if (std::none_of(issues.begin(), issues.end(), [&](const io::DeckIssue& i) { return i.to_string() == located.to_string(); }))
+          issues.push_back(std::move(located));
+      }
+    }
+  }
+  if (!issues.empty()) throw io::DeckError(std::move(issues));
+  return hashes;
+}
+
+void write_exit_code(const SweepLayout& layout, const std::string& case_name, int exit_code) {
+  std::ofstream(layout.exit_code(case_name), std::ios::trunc) << exit_code << "\n";
+}
+
+}  // namespace fowtsim::driver::sweep
