@@ -136,6 +136,31 @@ TEST_CASE("a window, the residue option and a default fatigue entry act as docum
   CHECK_THROWS_WITH(analyse_post(options), Catch::Contains("no channel `Laod`") && Catch::Contains("Load"));
 }
 
+TEST_CASE("a calculated channel is the magnitude of its components, with their DEL", "[unit]") {
+  // Fx = A cos, Fy = A sin: |F| = A exactly at every sample (a constant: no cycles, DEL 0), and
+  // Fx alone keeps its own DEL; a component missing from a file names file, channel and entry.
+  const auto dir = testing::scratch_dir("post_calculated");
+  const std::vector<double> t = times(50 * 64 + 1, 1.0 / 32.0);
+  std::vector<double> fy;
+  for (std::size_t j = 0; j < t.size(); ++j) fy.push_back(3.0 * std::sin(2.0 * std::numbers::pi * static_cast<double>(j % 64) / 64.0));
+  write_run(dir / "run.h5", {"Fx", "Fy"}, {"kN", "kN"}, t, {cosine(3.0, 0.0, 50), fy});
+  write_text(dir / "del.yaml", "calculated:\n  Fxy: {magnitude_of: [Fx, Fy]}\nchannels:\n  default: {wohler_exponent: 10}\n");
+  PostOptions options;
+  options.files = {dir / "run.h5"};
+  options.del_config = dir / "del.yaml";
+  const PostResults results = analyse_post(options);
+  REQUIRE(results.rows.size() == 3u);
+  const PostRow& magnitude = results.rows[2];
+  CHECK(magnitude.channel == "Fxy");
+  CHECK(magnitude.unit == "kN");
+  CHECK(magnitude.statistics.mean == Approx(3.0).epsilon(1e-15));  // cos² + sin² = 1 to rounding
+  CHECK(magnitude.statistics.max - magnitude.statistics.min < 1e-14);
+  CHECK(results.rows[0].fatigue->damage_equivalent_load > 5.0);  // Fx: 50 cycles of range 6
+  write_text(dir / "del.yaml", "calculated:\n  Fxz: {magnitude_of: [Fx, Fz]}\nchannels:\n  default: {wohler_exponent: 10}\n");
+  CHECK_THROWS_WITH(analyse_post(options), Catch::Contains("run.h5") && Catch::Contains("no channel Fz") &&
+                                               Catch::Contains("del.yaml:2"));
+}
+
 TEST_CASE("a fatigue configuration with a misspelt key is refused with its file and line", "[unit]") {
   const auto dir = testing::scratch_dir("post_bad_config");
   write_text(dir / "del.yaml", "channels:\n  RootMyc1:\n    wohler_exponet: 10\n");

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <memory>
 
@@ -63,9 +64,32 @@ struct Analysis {
   void lifetime(const LifetimeSpec& spec);
 };
 
+// Appends the configured calculated channels to a file's table; a missing component is bad input
+// naming the file, the channel and the configuration entry.
+void add_calculated(io::ChannelTable& table, const std::vector<CalculatedChannel>& calculated, const std::string& file) {
+  for (const CalculatedChannel& c : calculated) {
+    std::vector<std::size_t> parts;
+    for (const std::string& component : c.components) {
+      const std::optional<std::size_t> column = table.find(component);
+      if (!column)
+        throw InputError({"post", std::nullopt, c.name, "a channel of every file"},
+                         fmt::format("{}: no channel {} for the calculated channel {} ({})", file, component, c.name, c.location));
+      parts.push_back(*column);
+    }
+    std::vector<double> magnitude(table.rows(), 0.0);
+    for (const std::size_t p : parts)
+      for (std::size_t r = 0; r < magnitude.size(); ++r) magnitude[r] += table.columns[p][r] * table.columns[p][r];
+    for (double& m : magnitude) m = std::sqrt(m);
+    table.names.push_back(c.name);
+    table.units.push_back(table.units[parts.front()]);
+    table.columns.push_back(std::move(magnitude));
+  }
+}
+
 void Analysis::file(const std::filesystem::path& path) {
   const std::string name = path.string();
-  const io::ChannelTable table = io::read_channels(path);
+  io::ChannelTable table = io::read_channels(path);
+  if (fatigue) add_calculated(table, fatigue->calculated, name);
   const post::RowRange rows = post::rows_in_window(table.time(), options.window);
   const std::span<const double> time = rows_of(table.time(), rows);
   const double duration_s = time.back() - time.front();

@@ -37,6 +37,12 @@ post::FatigueParams fatigue_params(const io::ValidatedDeck& entry, double equiva
 FatigueConfig fatigue_config(const io::ValidatedDeck& deck) {
   FatigueConfig config;
   config.equivalent_frequency_hz = deck.number("equivalent_frequency_hz");
+  if (deck.has("calculated")) {
+    for (const std::string& name : deck.keys("calculated")) {
+      const std::string key = "calculated." + name;
+      config.calculated.push_back({name, deck.strings(key + ".magnitude_of"), where(deck, key)});
+    }
+  }
   for (const std::string& name : deck.keys("channels")) {
     const io::ValidatedDeck entry = deck.section("channels." + name);
     const post::FatigueParams params = fatigue_params(entry, config.equivalent_frequency_hz);
@@ -95,6 +101,11 @@ io::Schema fatigue_config_schema() {
   return io::Schema::map({
       {"equivalent_frequency_hz", io::Schema::number().unit("hz").greater_than(0.0).default_value(1.0).doc(
                                       "f_eq of the DEL: n_eq = f_eq T (MLife; 1 Hz as the seed's Table 4.3)")},
+      {"calculated", io::Schema::map_of(io::Schema::map({
+                         {"magnitude_of", io::Schema::sequence(io::Schema::string()).min_items(2).doc(
+                                              "channels whose vector magnitude √(a² + b² + …) this channel is; unit of the first")},
+                     })).optional().doc("channels computed in every file before the statistics, e.g. the combined flap-edge "
+                                        "root moment RootMxyb1: {magnitude_of: [RootMxb1, RootMyb1]} (MLife's calculated channels)")},
       {"channels", io::Schema::map_of(channel_fatigue_schema()).doc(
                        "per channel name (or `default` for every channel not listed) its S-N parameters")},
   });

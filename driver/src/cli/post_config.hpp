@@ -10,6 +10,8 @@
 //     RootMyc1: {wohler_exponent: 10, ultimate_load: 17750}   # kN-m, the channel's own unit
 //     RotTorq:  {wohler_exponent: 3, ultimate_load: 8909, goodman_fixed_mean: 0}
 //     default:  {wohler_exponent: 4}
+//   calculated:                        # optional: channels computed in every file first
+//     RootMxyb1: {magnitude_of: [RootMxb1, RootMyb1]}
 //
 // Lifetime specification — runs with their mean wind speed, the wind distribution, the design life,
 // and the fatigue configuration above under `fatigue:` (`fatigue: {include: del.yaml}` shares one):
@@ -35,8 +37,17 @@
 
 namespace fowtsim::driver {
 
+// A channel computed from others in every file (MLife's calculated channels): the vector magnitude
+// of its components, e.g. the combined flap-edge root moment √(RootMxb1² + RootMyb1²).
+struct CalculatedChannel {
+  std::string name;                     // new channel
+  std::vector<std::string> components;  // channels it is the magnitude of (same unit)
+  std::string location;                 // "file:line:col" of its entry
+};
+
 struct FatigueConfig {
   double equivalent_frequency_hz = 1.0;                   // f_eq [Hz]
+  std::vector<CalculatedChannel> calculated;             // added to each file's channels, in order
   std::map<std::string, post::FatigueParams> channels;   // per channel name
   std::optional<post::FatigueParams> default_params;     // for channels not listed
   std::map<std::string, std::string> channel_locations;  // channel → "file:line:col" of its entry
