@@ -1,5 +1,6 @@
 #include "cli/verify_turbine.hpp"
 #include "cli/verify_cases.hpp"
+#include "cli/verify_modules.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -28,8 +29,8 @@ void bench_hydro(std::FILE* out);
 void bench_waves(std::FILE* out);
 
 std::vector<std::string> verification_case_names() {
-  return {"coupling",         "beam-rollup", "beam-curved",        "beam-timestep", "beam-beamdyn",
-          "beam-frequencies", "sea",         "free-decay",         "turbine-validation", "turbine-oc3"};
+  return {"coupling", "beam-rollup", "beam-curved", "beam-timestep", "beam-beamdyn", "beam-frequencies", "sea",
+          "aero",     "wind",        "multibody",   "control",       "free-decay",   "turbine-validation", "turbine-oc3"};
 }
 
 std::vector<VerificationRow> run_verification_case(const std::string& name, std::FILE* out) {
@@ -40,6 +41,10 @@ std::vector<VerificationRow> run_verification_case(const std::string& name, std:
   if (name == "beam-beamdyn") return verify_beam_beamdyn(out);
   if (name == "beam-frequencies") return verify_beam_frequencies(out);
   if (name == "sea") return verify_sea(out);
+  if (name == "aero") return verify_aero(out);  // verify_aero_wind.cpp
+  if (name == "wind") return verify_wind(out);
+  if (name == "multibody") return verify_multibody(out);  // verify_multibody_control.cpp
+  if (name == "control") return verify_control(out);
   if (name == "free-decay") return verify_free_decay(out);
   if (name == "turbine-validation") return verify_turbine_validation(out);
   if (name == "turbine-oc3") return verify_turbine_oc3(out);

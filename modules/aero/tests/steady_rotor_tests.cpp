@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -13,7 +12,7 @@
 #include <catch2/catch.hpp>
 
 #include "fowtsim/aero/aero.hpp"
-#include "fowtsim/aero/rigid_rotor.hpp"
+#include "fowtsim/aero/verification.hpp"
 #include "fowtsim/testing/skip.hpp"
 #include "nrel5mw_deck.hpp"
 
@@ -21,17 +20,6 @@ using namespace fowtsim;
 using namespace fowtsim::aero;
 
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
-
-// Turbine geometry of the aero_steady decks (NRELOffshrBsline5MW_OC3Hywind_ElastoDyn.dat):
-// PreCone −2.5° (tips upwind), ShftTilt −5° (nose up), HubRad 1.5 m, OverHang −5.0191 m,
-// TowerHt 87.6 m, Twr2Shft 1.96256 m → apex 5.0 m upwind of the tower axis at 90.0 m.
-RigidRotor nrel5mw_rotor() {
-  const double tilt = 5.0 * kDegree, overhang = 5.0191;
-  return {Vec3(-overhang * std::cos(tilt), 0.0, 87.6 + 1.96256 + overhang * std::sin(tilt)), 0.0, tilt,
-          2.5 * kDegree, 1.5};
-}
 
 // An OpenFAST text output: header line starting with "Time", a units line, tab-separated rows.
 struct OutFile {
@@ -98,9 +86,7 @@ TEST_CASE("rigid NREL 5MW rotor matches OpenFAST AeroDyn at seven steady operati
           "[verification][aero]") {
   const auto ref = fowtsim::testing::shared_dir_or_skip() / "reference" / "openfast-runs" / "aero_steady";
   const Params params = aero::testing::load_nrel5mw_deck();
-  const RigidRotor rotor = nrel5mw_rotor();
-  Aero::Input in = make_input(params);
-  Aero::Output out = make_output(params);
+  const RigidRotor rotor = verification::nrel5mw_rigid_rotor();
   const std::vector<SummaryRow> cases = read_summary((ref / "summary.csv").string());
   REQUIRE(cases.size() == 7);
   double worst_load = 0.0, worst_alpha = 0.0, worst_induction = 0.0;  // reported below
@@ -111,35 +97,24 @@ TEST_CASE("rigid NREL 5MW rotor matches OpenFAST AeroDyn at seven steady operati
     std::snprintf(dir, sizeof dir, "U%02d", static_cast<int>(c.wind));
     const OutFile of = read_out((ref / dir / (std::string("aero_steady_") + dir + ".out")).string());
     const int c_time = of.column("Time"), c_az = of.column("Azimuth");
-    double power = 0, thrust = 0, torque = 0, cp = 0, ct = 0;
-    std::vector<double> alpha(params.output_nodes.size(), 0.0), axind(alpha.size(), 0.0);
-    std::vector<double> ref_alpha(alpha.size(), 0.0), ref_axind(alpha.size(), 0.0);
-    int samples = 0;
-    in.inflow_velocity_m_s.colwise() = Vec3(c.wind, 0.0, 0.0);
+    std::vector<double> azimuths;
+    std::vector<double> ref_alpha(params.output_nodes.size(), 0.0), ref_axind(ref_alpha.size(), 0.0);
     for (const std::vector<double>& row : of.rows) {
       if (row[c_time] < 15.0 - 1e-9) continue;
-      place_rigid_rotor(params, rotor, row[c_az] * kDegree, c.rpm * std::numbers::pi / 30.0, c.pitch * kDegree, in);
-      evaluate(params, in, Aero::State{}, out);
-      REQUIRE(out.unconverged_nodes == 0);
-      power += out.rotor.power_W;
-      thrust += out.rotor.force_hub_N.x();
-      torque += out.rotor.moment_hub_N_m.x();
-      cp += out.rotor.cp;
-      ct += out.rotor.ct;
-      for (std::size_t j = 0; j < alpha.size(); ++j) {
-        const NodeResult& n = out.nodes[params.output_nodes[j] - 1];  // blade 1
-        alpha[j] += n.section.alpha_rad / kDegree;
-        axind[j] += n.section.axial_induction;
+      azimuths.push_back(row[c_az]);
+      for (std::size_t j = 0; j < ref_alpha.size(); ++j) {
         ref_alpha[j] += row[of.column("B1N" + std::to_string(j + 1) + "Alpha")];
         ref_axind[j] += row[of.column("B1N" + std::to_string(j + 1) + "AxInd")];
       }
-      ++samples;
     }
+    const int samples = static_cast<int>(azimuths.size());
     REQUIRE(samples >= 50);
-    power /= samples, thrust /= samples, torque /= samples, cp /= samples, ct /= samples;
-    for (std::size_t j = 0; j < alpha.size(); ++j) {
-      alpha[j] /= samples, axind[j] /= samples, ref_alpha[j] /= samples, ref_axind[j] /= samples;
-    }
+    for (std::size_t j = 0; j < ref_alpha.size(); ++j) ref_alpha[j] /= samples, ref_axind[j] /= samples;
+    const verification::RotorMean m = verification::rotor_mean(params, rotor, c.wind, c.rpm, c.pitch, azimuths);
+    REQUIRE(m.unconverged_evaluations == 0);
+    const double power = m.power_W, thrust = m.thrust_N, torque = m.torque_N_m, cp = m.cp, ct = m.ct;
+    const std::vector<double>& alpha = m.alpha_deg;
+    const std::vector<double>& axind = m.axial_induction;
     std::printf("%4.0f | %8.1f (%8.1f) | %7.2f (%7.2f) | %8.1f (%8.1f) | %.4f (%.4f) | %.4f (%.4f) | %7.3f (%7.3f) | %.4f (%.4f)\n",
                 c.wind, power / 1e3, c.power_kW, thrust / 1e3, c.thrust_kN, torque / 1e3, c.torque_kNm, cp, c.cp,
                 ct, c.ct, alpha[1], ref_alpha[1], axind[1], ref_axind[1]);
@@ -177,37 +152,8 @@ TEST_CASE("rigid NREL 5MW rotor matches OpenFAST AeroDyn at seven steady operati
 // Same turbine geometry as above (precone, tilt), 8 m/s, λ = Ω R / RtVAvgxh, azimuth-averaged.
 TEST_CASE("NREL 5MW peak power coefficient at 0 deg pitch", "[verification][aero]") {
   const Params params = aero::testing::load_nrel5mw_deck();
-  const RigidRotor rotor = nrel5mw_rotor();
-  Aero::Input in = make_input(params);
-  Aero::Output out = make_output(params);
-  in.inflow_velocity_m_s.colwise() = Vec3(8.0, 0.0, 0.0);
-  place_rigid_rotor(params, rotor, 0.0, 1.0, 0.0, in);
-  evaluate(params, in, Aero::State{}, out);
-  const double radius = out.rotor.radius_m, u = out.rotor.mean_axial_inflow_m_s;
-  std::vector<double> lambda, cp;
-  for (double l = 5.0; l <= 11.0 + 1e-9; l += 0.05) {
-    double mean = 0.0;
-    constexpr int kAzimuths = 12;  // over one 120° period of the three-bladed rotor
-    for (int k = 0; k < kAzimuths; ++k) {
-      place_rigid_rotor(params, rotor, 2.0 * std::numbers::pi / 3.0 * k / kAzimuths, l * u / radius, 0.0, in);
-      evaluate(params, in, Aero::State{}, out);
-      mean += out.rotor.cp / kAzimuths;
-    }
-    lambda.push_back(l);
-    cp.push_back(mean);
-  }
-  std::size_t best = 0;
-  for (std::size_t i = 1; i < cp.size(); ++i) {
-    if (cp[i] > cp[best]) best = i;
-  }
-  REQUIRE(best > 0);
-  REQUIRE(best + 1 < cp.size());
-  // Vertex of the parabola through the best sample and its neighbours (equal spacing h).
-  const double h = lambda[1] - lambda[0];
-  const double c0 = cp[best - 1], c1 = cp[best], c2 = cp[best + 1];
-  const double shift = 0.5 * h * (c0 - c2) / (c0 - 2.0 * c1 + c2);
-  const double lambda_max = lambda[best] + shift;
-  const double cp_max = c1 - 0.25 * (c0 - c2) * shift / h;
+  const verification::CpPeak peak = verification::peak_power_coefficient(params, verification::nrel5mw_rigid_rotor(), 8.0);
+  const double cp_max = peak.cp, lambda_max = peak.tsr;
   std::printf("\nCp-lambda peak: Cp = %.4f at lambda = %.3f (38060: 0.482 at 7.55)\n", cp_max, lambda_max);
   // Tolerance 2 %: issue 4 bound for the published peak (older AeroDyn, different BEM options).
   CHECK(relative_error(cp_max, 0.482) < 0.02);

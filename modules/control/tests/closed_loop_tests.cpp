@@ -1,4 +1,4 @@
-// The baseline controller in closed loop with a quasi-steady NREL 5-MW rotor (quasi_steady_rotor.hpp):
+// The baseline controller in closed loop with a quasi-steady NREL 5-MW rotor (fowtsim/control/verification.hpp):
 // steady pitch against the published operating table, and bounded responses to wind steps.
 #include <algorithm>
 #include <cmath>
@@ -8,46 +8,21 @@
 
 #include "fowtsim/control/baseline_controller.hpp"
 #include "fowtsim/control/presets.hpp"
-#include "quasi_steady_rotor.hpp"
+#include "fowtsim/control/verification.hpp"
 
 using namespace fowtsim::control;
-using fowtsim::control::testing::LoopSample;
-using fowtsim::control::testing::Rotor;
-using fowtsim::control::testing::equilibrium_pitch_rad;
-using fowtsim::control::testing::run_loop;
+using fowtsim::control::verification::LoopSample;
+using fowtsim::control::verification::Rotor;
+using fowtsim::control::verification::SteadyLoop;
+using fowtsim::control::verification::equilibrium_pitch_rad;
+using fowtsim::control::verification::run_loop;
+using fowtsim::control::verification::settle_closed_loop;
 
 namespace {
 
 constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr double kRpm = 30.0 / std::numbers::pi;
 constexpr double kStep = 0.0125;  // OC3 deck's DT, the large step the controller runs at
-
-struct Steady {
-  double pitch_deg = 0.0;        // mean over the last 20 s
-  double rotor_speed_rpm = 0.0;  // mean over the last 20 s
-  double pitch_drift_deg = 0.0;  // max − min over the last 20 s
-};
-
-Steady settle(const BaselineParams& p, double wind, double t_end) {
-  const Rotor rotor;
-  BaselineController::State s = BaselineController::make_state(p);
-  Steady out;
-  double n = 0, lo = 1e9, hi = -1e9;
-  run_loop<BaselineController>(rotor, p, s, [wind](double) { return wind; }, 12.1 / kRpm, 0.0, kStep, t_end,
-                               [&](const LoopSample& x) {
-                                 if (x.time_s < t_end - 20.0) return;
-                                 const double th = x.demand.blade_pitch_rad[0] * kDeg;
-                                 out.pitch_deg += th;
-                                 out.rotor_speed_rpm += x.rotor_speed_rad_s * kRpm;
-                                 lo = std::min(lo, th);
-                                 hi = std::max(hi, th);
-                                 ++n;
-                               });
-  out.pitch_deg /= n;
-  out.rotor_speed_rpm /= n;
-  out.pitch_drift_deg = hi - lo;
-  return out;
-}
 
 }  // namespace
 
@@ -62,7 +37,7 @@ TEST_CASE("steady pitch of the closed loop matches the published operating table
   for (const auto& [name, p, t_end] : {std::tuple{"land", nrel5mw_land_baseline(), 150.0},
                                        std::tuple{"OC3", oc3_hywind_baseline(), 600.0}}) {
     for (const Point& point : table) {
-      const Steady steady = settle(p, point.wind, t_end);
+      const SteadyLoop steady = settle_closed_loop(rotor, p, point.wind, t_end);
       const double ideal_deg =
           equilibrium_pitch_rad(rotor, point.wind, p.reference_speed_rad_s / rotor.gearbox_ratio, p.rated_power_W) * kDeg;
       INFO(name << " U = " << point.wind << " m/s: pitch " << steady.pitch_deg << "° (published " << point.pitch_deg
@@ -94,7 +69,7 @@ TEST_CASE("rotor model consistency: Cp table against OpenFAST AeroDyn operating 
                           {3.2021, 22.96, 0.04584}};
   for (const Point& x : points) {
     const double cp = rotor.power_coefficient(x.tsr, x.pitch_deg);
-    const double offset_deg = fowtsim::control::testing::pitch_for_cp_deg(rotor, x.tsr, x.cp_openfast) - x.pitch_deg;
+    const double offset_deg = fowtsim::control::verification::pitch_for_cp_deg(rotor, x.tsr, x.cp_openfast) - x.pitch_deg;
     INFO("λ = " << x.tsr << ", θ = " << x.pitch_deg << "°: table Cp " << cp << ", OpenFAST " << x.cp_openfast
                 << ", pitch-equivalent offset " << offset_deg << "°");
     // CCBlade table (no skew from the 5° tilt) vs AeroDyn: Cp 1.7–8.8 % low, i.e. the table reaches

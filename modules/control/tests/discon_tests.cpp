@@ -12,14 +12,14 @@
 #include "fowtsim/control/external_controller.hpp"
 #include "fowtsim/control/presets.hpp"
 #include "fowtsim/control/swap_records.hpp"
+#include "fowtsim/control/verification.hpp"
 #include "fowtsim/core/error.hpp"
-#include "quasi_steady_rotor.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::control;
-using fowtsim::control::testing::LoopSample;
-using fowtsim::control::testing::Rotor;
-using fowtsim::control::testing::run_loop;
+using fowtsim::control::verification::LoopSample;
+using fowtsim::control::verification::Rotor;
+using fowtsim::control::verification::run_loop;
 
 namespace {
 

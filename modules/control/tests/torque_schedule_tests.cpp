@@ -6,23 +6,10 @@
 
 #include "fowtsim/control/baseline_controller.hpp"
 #include "fowtsim/control/presets.hpp"
+#include "fowtsim/control/verification.hpp"
 
 using namespace fowtsim::control;
-
-namespace {
-
-// Torque demand of the controller after holding the generator speed `w` long enough for the
-// filter (time constant 0.64 s) and the torque-rate limit (15 kN·m/s) to settle: 60 s at 0.0125 s.
-double settled_torque(const BaselineParams& p, double w, double pitch_rad = 0.0) {
-  BaselineController::State s = BaselineController::make_state(p);
-  ControllerInput u;
-  u.generator_speed_rad_s = w;
-  u.blade_pitch_rad = {pitch_rad, pitch_rad, pitch_rad};
-  for (int k = 0; k <= 4800; ++k) BaselineController::advance(p, u, 0.0125 * k, 0.0125, s);
-  return BaselineController::outputs(p, u, s).generator_torque_N_m;
-}
-
-}  // namespace
+using fowtsim::control::verification::settled_torque;
 
 TEST_CASE("region 2 torque is k ω² with the published k", "[verification][control]") {
   // Intent: in region 2 the closed controller holds T = VS_Rgn2K ω² (38060 §7.2), k = 2.332287

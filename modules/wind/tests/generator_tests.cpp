@@ -15,6 +15,7 @@
 #include "fowtsim/wind/coherent_sampler.hpp"
 #include "fowtsim/wind/iec_turbulence.hpp"
 #include "fowtsim/wind/turbulence_generator.hpp"
+#include "fowtsim/wind/verification.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::wind;
@@ -22,53 +23,8 @@ using Complex = std::complex<double>;
 using test_support::dft;
 using test_support::series_at;
 
-namespace {
-
-// Covariance E[X Xᴴ] realised by the sampler, from unit vectors ξ = e_l: Σ_l X(e_l) X(e_l)ᴴ.
-Eigen::MatrixXcd realised_covariance(CoherentSampler& sampler) {
-  const std::size_t n = sampler.point_count(), draws = sampler.draws();
-  Eigen::MatrixXcd cov = Eigen::MatrixXcd::Zero(n, n);
-  std::vector<Complex> xi(draws), x(n);
-  for (std::size_t l = 0; l < draws; ++l) {
-    std::fill(xi.begin(), xi.end(), Complex(0.0, 0.0));
-    xi[l] = 1.0;
-    sampler.sample(xi, x);
-    const Eigen::Map<Eigen::VectorXcd> v(x.data(), n);
-    cov += v * v.adjoint();
-  }
-  return cov;
-}
-
-double coherence_error(CoherentSampler& sampler, int ny, double dy, double dz, double a) {
-  const Eigen::MatrixXcd cov = realised_covariance(sampler);
-  double worst = 0.0;
-  for (Eigen::Index j = 0; j < cov.rows(); ++j)
-    for (Eigen::Index k = 0; k < cov.cols(); ++k) {
-      const double r = std::hypot((j % ny - k % ny) * dy, (j / ny - k / ny) * dz);
-      worst = std::max(worst, std::abs(cov(j, k) - std::exp(-a * r)));
-    }
-  return worst;
-}
-
-WindParams small_turbulent(std::uint64_t seed) {
-  WindParams p;
-  p.model = WindModel::turbulent;
-  p.speed_m_s = 10.0;
-  p.reference_height_m = 90.0;
-  p.turbulence.category = TurbulenceCategory::A;
-  p.turbulence.ny = 4;
-  p.turbulence.nz = 3;
-  p.turbulence.width_m = 60.0;   // dy = 20 m
-  p.turbulence.height_m = 40.0;  // dz = 20 m
-  p.turbulence.dt_s = 0.25;
-  p.turbulence.duration_s = 600.0;
-  p.turbulence.seed = seed;
-  return p;
-}
-
-
-
-}  // namespace
+using verification::sampler_coherence_error;
+using verification::small_turbulent_field;
 
 // Intent: every way of the sampler realises the IEC coherence matrix: embedding and dense exactly
 // (to round-off, tolerance 1e-12), the independent switch only where all coherences are < 1e-4.
@@ -77,11 +33,11 @@ TEST_CASE("the coherent sampler realises the IEC coherence matrix", "[verificati
   const double dy = 4.0, dz = 5.0;
   CoherentSampler sampler(ny, nz, dy, dz);
   CHECK(sampler.prepare(0.5) == CoherentSampler::Method::embedding);
-  CHECK(coherence_error(sampler, ny, dy, dz, 0.5) < 1e-12);  // exact up to FFT round-off
+  CHECK(sampler_coherence_error(sampler, ny, dy, dz, 0.5) < 1e-12);  // exact up to FFT round-off
   CHECK(sampler.prepare(0.002) == CoherentSampler::Method::dense);  // embedding indefinite at long range
-  CHECK(coherence_error(sampler, ny, dy, dz, 0.002) < 1e-12);
+  CHECK(sampler_coherence_error(sampler, ny, dy, dz, 0.002) < 1e-12);
   CHECK(sampler.prepare(2.5) == CoherentSampler::Method::independent);  // exp(−2.5·4) = 4.5e-5 < 1e-4
-  CHECK(coherence_error(sampler, ny, dy, dz, 2.5) < CoherentSampler::independence_threshold);
+  CHECK(sampler_coherence_error(sampler, ny, dy, dz, 2.5) < CoherentSampler::independence_threshold);
   CHECK(sampler.max_dropped_coherence() == Approx(std::exp(-10.0)).epsilon(1e-12));
 }
 
@@ -102,9 +58,9 @@ TEST_CASE("IEC NTM and ETM standard deviations", "[verification][wind][turbulenc
 
 // Intent: same seed → bit-identical field (DESIGN.md §7); another seed → another field.
 TEST_CASE("the generator is deterministic per seed", "[unit][wind][turbulence]") {
-  const GeneratedTurbulence a = generate_turbulence(small_turbulent(7));
-  const GeneratedTurbulence b = generate_turbulence(small_turbulent(7));
-  const GeneratedTurbulence c = generate_turbulence(small_turbulent(8));
+  const GeneratedTurbulence a = generate_turbulence(small_turbulent_field(7));
+  const GeneratedTurbulence b = generate_turbulence(small_turbulent_field(7));
+  const GeneratedTurbulence c = generate_turbulence(small_turbulent_field(8));
   REQUIRE(a.field.grid.size() == b.field.grid.size());
   CHECK(std::memcmp(a.field.grid.data(), b.field.grid.data(), a.field.grid.size() * sizeof(float)) == 0);
   CHECK(std::memcmp(a.field.grid.data(), c.field.grid.data(), a.field.grid.size() * sizeof(float)) != 0);
@@ -124,7 +80,7 @@ TEST_CASE("the generator is deterministic per seed", "[unit][wind][turbulence]")
 TEST_CASE("generated fields have the IEC Kaimal spectra, intensity and coherence",
           "[verification][wind][turbulence]") {
   const int seeds = 240;
-  const WindParams p0 = small_turbulent(1);
+  const WindParams p0 = small_turbulent_field(1);
   const KaimalModel kaimal = kaimal_model(p0.turbulence, p0.speed_m_s, p0.reference_height_m);
   const int n = static_cast<int>(std::llround(p0.turbulence.duration_s / p0.turbulence.dt_s));
   const double dt = p0.turbulence.dt_s, df = 1.0 / (n * dt);
@@ -144,7 +100,7 @@ TEST_CASE("generated fields have the IEC Kaimal spectra, intensity and coherence
   double expected_sigma[3] = {0, 0, 0};
   int series = 0;
   for (int seed = 1; seed <= seeds; ++seed) {
-    const GeneratedTurbulence g = generate_turbulence(small_turbulent(static_cast<std::uint64_t>(seed)));
+    const GeneratedTurbulence g = generate_turbulence(small_turbulent_field(static_cast<std::uint64_t>(seed)));
     for (int c = 0; c < 3; ++c) expected_sigma[c] = g.stats.expected_sigma_m_s[c];
     const FullField& f = g.field;
     for (int c = 0; c < 3; ++c)

@@ -1,14 +1,14 @@
-#include "quasi_steady_rotor.hpp"
+#include "fowtsim/control/verification.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
 #include <string>
 
 #include "fowtsim/control/external_controller.hpp"
+#include "fowtsim/core/error.hpp"
 
-namespace fowtsim::control::testing {
+namespace fowtsim::control::verification {
 namespace {
 
 constexpr int kRows = 12;     // λ = 3.0, 3.5, …, 8.5
@@ -23,8 +23,8 @@ constexpr double kCp[kRows * kColumns] = {
 double Rotor::power_coefficient(double tsr, double pitch_deg) const {
   const double x = (tsr - kTsr0) / kSpacing, y = (pitch_deg - kPitch0) / kSpacing;
   if (!(x >= 0.0 && x <= kRows - 1 && y >= 0.0 && y <= kColumns - 1)) {
-    throw std::out_of_range("Cp table: λ = " + std::to_string(tsr) + ", θ = " + std::to_string(pitch_deg) +
-                            " deg outside λ ∈ [3, 8.5], θ ∈ [−5, 24.5] deg");
+    throw InputError({"control.verification", std::nullopt, "Cp table", "stay within λ ∈ [3, 8.5], θ ∈ [−5, 24.5] deg"},
+                     "Cp table: λ = " + std::to_string(tsr) + ", θ = " + std::to_string(pitch_deg) + " deg outside the table");
   }
   const int i = std::min(static_cast<int>(x), kRows - 2), j = std::min(static_cast<int>(y), kColumns - 2);
   const double fx = x - i, fy = y - j;
@@ -84,6 +84,52 @@ void run_loop(const Rotor& rotor, const typename Controller::Params& p, typename
   }
 }
 
+SteadyLoop settle_closed_loop(const Rotor& rotor, const BaselineParams& p, double wind, double t_end) {
+  constexpr double kDeg = 180.0 / std::numbers::pi, kRpm = 30.0 / std::numbers::pi;
+  BaselineController::State s = BaselineController::make_state(p);
+  SteadyLoop out;
+  double n = 0, lo = 1e9, hi = -1e9;
+  run_loop<BaselineController>(rotor, p, s, [wind](double) { return wind; }, 12.1 / kRpm, 0.0, 0.0125, t_end,
+                               [&](const LoopSample& x) {
+                                 if (x.time_s < t_end - 20.0) return;
+                                 const double th = x.demand.blade_pitch_rad[0] * kDeg;
+                                 out.pitch_deg += th;
+                                 out.rotor_speed_rpm += x.rotor_speed_rad_s * kRpm;
+                                 lo = std::min(lo, th);
+                                 hi = std::max(hi, th);
+                                 ++n;
+                               });
+  out.pitch_deg /= n;
+  out.rotor_speed_rpm /= n;
+  out.pitch_drift_deg = hi - lo;
+  return out;
+}
+
+double settled_torque(const BaselineParams& p, double w, double pitch_rad) {
+  BaselineController::State s = BaselineController::make_state(p);
+  ControllerInput u;
+  u.generator_speed_rad_s = w;
+  u.blade_pitch_rad = {pitch_rad, pitch_rad, pitch_rad};
+  for (int k = 0; k <= 4800; ++k) BaselineController::advance(p, u, 0.0125 * k, 0.0125, s);
+  return BaselineController::outputs(p, u, s).generator_torque_N_m;
+}
+
+double filter_step_response_error(const BaselineParams& p) {
+  BaselineController::State s = BaselineController::make_state(p);
+  ControllerInput u;
+  u.generator_speed_rad_s = 100.0;
+  BaselineController::advance(p, u, 0.0, 0.01, s);  // seeds ω_f = 100
+  u.generator_speed_rad_s = 110.0;
+  double t = 0.0, worst = 0.0;
+  for (double step : {0.01, 0.0125, 0.03, 0.2, 0.5}) {
+    t += step;
+    BaselineController::advance(p, u, t, step, s);
+    const double expected = 110.0 - 10.0 * std::exp(-p.filter_corner_rad_s * t);
+    worst = std::max(worst, std::abs(s.filtered_speed_rad_s - expected) / 110.0);
+  }
+  return worst;
+}
+
 template void run_loop<BaselineController>(const Rotor&, const BaselineController::Params&, BaselineController::State&,
                                            const std::function<double(double)>&, double, double, double, double,
                                            const std::function<void(const LoopSample&)>&);
@@ -91,4 +137,4 @@ template void run_loop<ExternalController>(const Rotor&, const ExternalControlle
                                            const std::function<double(double)>&, double, double, double, double,
                                            const std::function<void(const LoopSample&)>&);
 
-}  // namespace fowtsim::control::testing
+}  // namespace fowtsim::control::verification

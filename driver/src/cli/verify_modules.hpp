@@ -1,0 +1,24 @@
+#pragma once
+// `fowtsim verify aero|wind|multibody|control`: the headline checks of each module's verification
+// tests (issue 16), computed through the modules' public verification headers
+// (fowtsim/<module>/verification.hpp) that the module tests use too. Each row holds its bound and
+// the reason for it; the rows against OpenFAST or TurbSim files are left out when ../shared is
+// absent (the detail output says so).
+#include <cstdio>
+#include <vector>
+
+#include "cli/reports.hpp"
+
+namespace fowtsim::driver {
+
+// NREL 5MW Cp–λ peak, rigid rotor against OpenFAST AeroDyn at its seven operating points, the
+// momentum balance of converged sections, the tower potential flow.
+std::vector<VerificationRow> verify_aero(std::FILE* out);
+// IEC NTM/ETM σ, generated fields' σ u, v, w, the sampler's coherence, TurbSim's OC3 files.
+std::vector<VerificationRow> verify_wind(std::FILE* out);
+// Gyroscopic precession, heave period on springs, conservation of the free OC3 system, OC3 masses.
+std::vector<VerificationRow> verify_multibody(std::FILE* out);
+// Closed-loop steady pitch against the operating table, torque schedule, speed filter.
+std::vector<VerificationRow> verify_control(std::FILE* out);
+
+}  // namespace fowtsim::driver

@@ -1,0 +1,64 @@
+// The rows of `fowtsim verify aero|wind|multibody|control` (cli/verify_aero_wind.cpp,
+// cli/verify_multibody_control.cpp: each row with its bound and the reason for it) all pass, and
+// none goes missing: the row counts are fixed, with or without the reference data of ../shared.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "cli/verify_cases.hpp"
+#include "fowtsim/testing/skip.hpp"
+
+using namespace fowtsim;
+using namespace fowtsim::driver;
+
+namespace {
+
+// Runs one case through the command's dispatcher (the name must be known to it) and checks every
+// row; `rows_without_reference` rows need nothing from ../shared, `reference_rows` more come from it.
+void check_case(const std::string& name, std::size_t rows_without_reference, std::size_t reference_rows) {
+  const std::filesystem::path shared = FOWTSIM_SHARED_DIR;
+  const bool have_reference = std::filesystem::is_directory(shared / "reference");
+  set_shared_dir(shared);
+  const std::vector<VerificationRow> rows = run_verification_case(name, stdout);
+  CHECK(rows.size() == rows_without_reference + (have_reference ? reference_rows : 0));
+  for (const VerificationRow& r : rows) {
+    INFO(r.case_name << ": " << r.metric << " = " << r.value << " (" << r.tolerance << ", " << r.source << ")");
+    CHECK(r.case_name == name);
+    CHECK(r.pass);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("fowtsim verify aero: Cp peak, AeroDyn operating points, momentum balance, tower potential flow",
+          "[verification][aero]") {
+  // Cp peak and its λ; momentum thrust and torque; tower potential flow. With ../shared: five
+  // rotor loads, α, induction and convergence against AeroDyn's seven operating points.
+  check_case("aero", 5, 8);
+}
+
+TEST_CASE("fowtsim verify wind: IEC σ, generated σ, sampler coherence, TurbSim files", "[verification][wind]") {
+  // NTM and ETM σ1, generated σ u/v/w, three sampler methods. With ../shared: the 60 s file
+  // against Wind1VelX/Y/Z and the 600 s file's hub statistics against TurbSim's summary.
+  check_case("wind", 8, 7);
+}
+
+TEST_CASE("fowtsim verify multibody: precession, heave period, conservation, OC3 masses", "[verification][multibody]") {
+  check_case("multibody", 10, 0);
+}
+
+TEST_CASE("fowtsim verify control: closed-loop pitch, torque schedule, speed filter", "[verification][control]") {
+  check_case("control", 12, 0);
+}
+
+TEST_CASE("fowtsim verify all includes the module cases", "[unit]") {
+  const std::vector<std::string> names = verification_case_names();
+  for (const char* name : {"aero", "wind", "multibody", "control"}) {
+    INFO(name);
+    CHECK(std::find(names.begin(), names.end(), name) != names.end());
+  }
+}
