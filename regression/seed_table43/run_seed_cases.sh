@@ -13,8 +13,10 @@ cases=(table42_120m_fixed table42_120m_typical table42_120m_extreme table42_74m_
 printf '%s\n' "${cases[@]}" | xargs -P 2 -I{} sh -c "'$fowtsim' run '$decks/{}.yaml' -o '$out/{}.h5' > '$out/{}.log' 2>&1 || { cat '$out/{}.log'; exit 1; }"
 files=()
 for c in "${cases[@]}"; do files+=("$out/$c.h5"); done
-"$fowtsim" post "${files[@]}" --window 200 800 --del-config "$here/del_table43.yaml" \
-  --channels RootMxyb1,RootFxyb1,RootFzb1,RotTorq,PtfmPitch,BldPitch1,GenPwr -o "$out/dels.csv" -o "$out/dels.h5" > "$out/dels.txt"
+for config in table43 plain; do
+  "$fowtsim" post "${files[@]}" --window 200 800 --del-config "$here/del_$config.yaml" \
+    --channels RootMxyb1,RootFxyb1,RootFzb1,RotTorq,PtfmPitch,BldPitch1,GenPwr -o "$out/dels_$config.csv" > "$out/dels_$config.txt"
+done
 "$fowtsim" post "$out/table42_120m_typical.h5" "$out/table42_74m_typical.h5" --window 200 800 --channels PtfmPitch \
-  --psd-channels PtfmPitch,RootMyb1 --pom 'B1N*_TD?r' -o "$out/modes.h5" > "$out/modes.txt"
+  --psd-channels PtfmPitch,RootMyb1 --pom 'B1N*_TD?r' -o "$out/modes.h5" --plot "$out/plots" > "$out/modes.txt"
 /usr/bin/python3 "$here/table43.py" "$out"
