@@ -1,5 +1,6 @@
 // fowtsim: the command line. The only place that prints and chooses exit codes:
 //   0 success · 1 a comparison or verification failed · 2 bad input or usage · 3 numerical failure
+#include <chrono>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -71,9 +72,25 @@ int verify_command(const std::vector<std::string>& cases, const std::filesystem:
   return outcome.exit_code() == 0 ? 0 : kExitFail;
 }
 
+// What a benchmark case costs on one core of this machine kind, said before anything runs.
+std::string expected_duration(const std::string& name) {
+  if (name == "beam") return "about 15 minutes (its ARKODE 49-volume case alone takes 12)";
+  if (name == "turbine") return "about 20 minutes (84 runs of the coupled OC3 load case)";
+  return "under a minute";
+}
+
 int bench_command(std::vector<std::string> cases) {
   if (cases.empty() || (cases.size() == 1 && cases[0] == "all")) cases = benchmark_case_names();
-  for (const std::string& name : cases) run_benchmark_case(name, stdout);
+  fmt::print("fowtsim bench: {} case{}\n", cases.size(), cases.size() == 1 ? "" : "s");
+  for (const std::string& name : cases) fmt::print("  {:<10} {}\n", name, expected_duration(name));
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    fmt::print("\n[{}/{}] {} …\n", i + 1, cases.size(), cases[i]);
+    std::fflush(stdout);
+    const auto start = std::chrono::steady_clock::now();
+    run_benchmark_case(cases[i], stdout);
+    fmt::print("[{}/{}] {} done in {:.1f} s\n", i + 1, cases.size(), cases[i],
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
   return 0;
 }
 
@@ -101,6 +118,9 @@ int main(int argc, char** argv) {
                   "error. Files are written as <name>.running.<ext> and renamed when the run ends");
   run->add_option("--out-format", out_format, "output format")->check(CLI::IsMember({"h5", "out", "both"}));
   run->add_option("--tmax", tmax, "simulated time [s], overrides simulation.t_max_s")
+      ->check(positive("a positive number of seconds"));
+  double dt = 0;
+  run->add_option("--dt", dt, "beam time step [s] of a BeamDyn driver input or a beam deck, overrides its DT / simulation.dt_s")
       ->check(positive("a positive number of seconds"));
   int segments = 0;
   std::string integrator;
@@ -238,6 +258,7 @@ int main(int argc, char** argv) {
       if (!out_base.empty()) request.output_base = out_base;
       if (!out_format.empty()) request.output_format = out_format;
       if (tmax > 0) request.t_max_s = tmax;
+      if (dt > 0) request.dt_s = dt;
       if (segments > 0) request.beam_segments = segments;
       if (!integrator.empty()) request.beam_integrator = integrator;
       if (matrix_age > 0) request.beam_matrix_max_age = matrix_age;

@@ -138,12 +138,12 @@ TEST_CASE("output names: whole runs write x.h5 for -o x.h5 and x.out for -o x.ou
 TEST_CASE("output names: fowtsim turbulence -o tb.bts writes tb.bts and tb.h5", "[unit][run]") {
   const auto dir = testing::scratch_dir("guard_turbulence");
   const auto deck = dir / "wind.yaml";
-  std::ofstream(deck) << R"(wind:
-  model: turbulent
-  speed_m_s: 12.0
-  reference_height_m: 90.0
-  turbulence: {ny: 4, nz: 4, width_m: 40.0, height_m: 40.0, dt_s: 0.5, duration_s: 20.0, seed: 7}
-)";
+  const auto write_wind_deck = [&](double duration_s) {
+    std::ofstream(deck) << "wind:\n  model: turbulent\n  speed_m_s: 12.0\n  reference_height_m: 90.0\n"
+                        << "  turbulence: {ny: 4, nz: 4, width_m: 40.0, height_m: 40.0, dt_s: 0.5, duration_s: " << duration_s
+                        << ", seed: 7}\n";
+  };
+  write_wind_deck(20.0);
   std::FILE* sink = std::tmpfile();
   CHECK(run_turbulence_command(deck, dir / "tb.bts", sink) == 0);
   std::fclose(sink);
@@ -157,12 +157,7 @@ TEST_CASE("output names: fowtsim turbulence -o tb.bts writes tb.bts and tb.h5", 
   // A write that fails (here the HDF5's temporary name is taken by a folder) leaves the field
   // written before untouched (a 40-s field would be twice its size) and no temporary file behind.
   const auto size_before = std::filesystem::file_size(dir / "tb.bts");
-  std::ofstream(deck) << R"(wind:
-  model: turbulent
-  speed_m_s: 12.0
-  reference_height_m: 90.0
-  turbulence: {ny: 4, nz: 4, width_m: 40.0, height_m: 40.0, dt_s: 0.5, duration_s: 40.0, seed: 7}
-)";
+  write_wind_deck(40.0);
   std::filesystem::create_directories(dir / "tb.running.h5" / "blocker");
   std::FILE* sink2 = std::tmpfile();
   CHECK_THROWS(run_turbulence_command(deck, dir / "tb", sink2));
@@ -184,6 +179,27 @@ TEST_CASE("output names: a BeamDyn driver input writes runs/bd_driver.h5, not ru
   CHECK(report.outputs == std::vector<std::filesystem::path>{"runs/bd_driver.h5"});
   CHECK(std::filesystem::exists(dir / "runs/bd_driver.h5"));
   CHECK_FALSE(std::filesystem::exists(dir / "runs/.h5"));
+}
+
+TEST_CASE("--dt sets a BeamDyn run's time step, and is refused where the deck sets the steps", "[verification][run]") {
+  // The BeamDyn Az00 case over 1 s at its own step, then at twice it: half the rows.
+  const auto shared = testing::shared_dir_or_skip();
+  const auto dir = testing::scratch_dir("guard_dt");
+  RunRequest r = run_request(shared / "reference/r-test/modules/beamdyn/bd_5MW_dynamic_gravity_Az00/bd_driver.inp", dir / "bd");
+  r.beam_segments = 8;
+  r.t_max_s = 1.0;
+  run_scene(r, nullptr);
+  const io::ChannelTable fine = io::read_channels(dir / "bd.out");
+  const double deck_dt = fine.time()[1] - fine.time()[0];
+  r.dt_s = 2.0 * deck_dt;
+  run_scene(r, nullptr);
+  const io::ChannelTable coarse = io::read_channels(dir / "bd.out");
+  CHECK(coarse.rows() == (fine.rows() - 1) / 2 + 1);  // t0 and every step to 1 s
+  CHECK(coarse.time()[1] - coarse.time()[0] == Approx(2.0 * deck_dt).epsilon(1e-12));
+  RunRequest floating = run_request(platform_deck(), dir / "platform");
+  floating.dt_s = 0.01;
+  CHECK_THROWS_WITH(run_scene(floating, nullptr), Catch::Contains("--dt") && Catch::Contains("simulation.dt_s"));
+  CHECK_FALSE(std::filesystem::exists(dir / "platform.out"));
 }
 
 // ── item 3: nothing is created or overwritten before every check passed ───────────────────

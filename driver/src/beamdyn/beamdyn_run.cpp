@@ -66,6 +66,7 @@ RunReport run_single_beam(const BeamDynSetup& setup_in, const SingleBeamRun& how
                           const ProgressCallback& progress) {
   BeamDynSetup setup = setup_in;
   if (request.t_max_s) setup.t_final_s = setup.t_initial_s + *request.t_max_s;
+  if (request.dt_s) setup.dt_s = *request.dt_s;
   const beam::BeamModel model = beam::discretise(setup.definition, how.segments);
 
   RunReport report;

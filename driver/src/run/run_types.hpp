@@ -14,6 +14,7 @@ struct RunRequest {
                                                      // honoured (see resolve_output_names)
   std::optional<std::string> output_format;          // --out-format h5|out|both (overrides the deck)
   std::optional<double> t_max_s;                     // --tmax: overrides simulation.t_max_s [s]
+  std::optional<double> dt_s;                        // --dt: beam runs' time step (BeamDyn DT, beam decks) [s]
   std::optional<int> beam_segments;                  // --segments: finite volumes per beam
   std::optional<std::string> beam_integrator;        // --integrator: generalized_alpha | erk
   std::optional<int> beam_matrix_max_age;            // --matrix-age: generalized-α step-matrix reuse

@@ -36,6 +36,10 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
                           const ProgressCallback& progress) {
   const double t_max = request.t_max_s.value_or(deck.number("simulation.t_max_s"));
   const double dt = deck.number("simulation.dt_s");
+  if (request.dt_s)
+    throw InputError({"scene", std::nullopt, "--dt", "simulation.dt_s in the deck"},
+                     "--dt sets the time step of beam runs (BeamDyn driver inputs, beam decks); this scene's steps are "
+                     "set in the deck (" + where(deck, "simulation.dt_s") + ")");
   // Every check before any file is opened: a failed start must not touch an earlier output.
   const long steps = std::lround(t_max / dt);
   if (steps < 1 || std::abs(static_cast<double>(steps) * dt - t_max) > 1e-9 * t_max) {

@@ -35,6 +35,9 @@ Params read_oscillator(const io::ValidatedDeck& d) {
 CouplingSettings read_settings(const io::ValidatedDeck& deck, const RunRequest& request) {
   CouplingSettings s;
   s.t_max_s = request.t_max_s.value_or(deck.number("simulation.t_max_s"));
+  if (request.dt_s)
+    throw InputError({"toy", std::nullopt, "--dt", "simulation.dt_coupling_s in the deck"},
+                     "--dt sets the time step of beam runs (BeamDyn driver inputs, beam decks); this scene's steps are set in the deck");
   s.dt_coupling_s = deck.number("simulation.dt_coupling_s");
   s.substeps = static_cast<int>(deck.integer("simulation.substeps"));
   s.mode = parse_coupling_mode(deck.string("simulation.coupling"));
