@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/reports.hpp"
 #include "decks/aero_deck.hpp"
 #include "fowtsim/aero/benchmarks.hpp"
 #include "fowtsim/control/benchmark.hpp"
@@ -24,29 +25,37 @@ void bench_aero(std::FILE* out) {
   } else {
     const io::ValidatedDeck deck = io::read_deck(io::Schema::map({{"aero", aero_schema()}, {"airfoils", airfoils_schema()}}), deck_path);
     fmt::print(out, "NREL 5MW rotor, one aerodynamic evaluation (BEM at every node + rotor sums), 11 m/s, 11.87 rpm\n");
-    fmt::print(out, "{:<28} {:>7} {:>6} {:>12} {:>10} {:>14} {:>10}\n", "case", "blades", "nodes", "µs/rotor", "µs/node", "R(φ) calls/node",
-               "power kW");
-    for (const auto& r : aero::benchmarks::rotor_evaluation_bench(aero_params(deck), 4000))
-      fmt::print(out, "{:<28} {:>7} {:>6} {:>12.1f} {:>10.2f} {:>14.1f} {:>10.1f}\n", r.name, r.blades, r.nodes_per_blade, r.us_per_evaluation,
-                 r.us_per_node, r.residual_calls_per_node, r.power_W / 1e3);
+    const auto rows = aero::benchmarks::rotor_evaluation_bench(aero_params(deck), 4000);
+    const std::size_t w = name_width(rows, [](const auto& r) { return r.name; });
+    fmt::print(out, "{:<{}} {:>7} {:>6} {:>12} {:>10} {:>16} {:>10}\n", "case", w, "blades", "nodes", "µs/rotor", "µs/node",
+               "R(φ) calls/node", "power kW");
+    for (const auto& r : rows)
+      fmt::print(out, "{:<{}} {:>7} {:>6} {:>12.1f} {:>10.2f} {:>16.1f} {:>10.1f}\n", r.name, w, r.blades, r.nodes_per_blade,
+                 r.us_per_evaluation, r.us_per_node, r.residual_calls_per_node, r.power_W / 1e3);
   }
   fmt::print(out, "\nTurbulence: the OC3 deck's TurbSim field (IEC Kaimal NTM class B, 12 m/s at 90 m, 31×31, 630 s at 20 Hz)\n");
-  fmt::print(out, "{:<40} {:>9} {:>9} {:>10}  {}\n", "case", "wall [s]", "CPU [s]", "µs/call", "details");
-  for (const auto& r : wind::bench_wind(1.0, 1'000'000))
-    fmt::print(out, "{:<40} {:>9.2f} {:>9.2f} {:>10.3f}  {}\n", r.name, r.wall_time_s, r.cpu_time_s, r.microseconds_per_call, r.details);
+  const auto wind_rows = wind::bench_wind(1.0, 1'000'000);
+  const std::size_t w = name_width(wind_rows, [](const auto& r) { return r.name; });
+  fmt::print(out, "{:<{}} {:>9} {:>9} {:>10}  {}\n", "case", w, "wall [s]", "CPU [s]", "µs/call", "details");
+  for (const auto& r : wind_rows)
+    fmt::print(out, "{:<{}} {:>9.2f} {:>9.2f} {:>10.3f}  {}\n", r.name, w, r.wall_time_s, r.cpu_time_s, r.microseconds_per_call, r.details);
   fmt::print(out, "(TurbSim took 1,657 s of CPU for the same grid on this kind of machine: openfast-runs/NOTES.md)\n");
 }
 
 void bench_multibody(std::FILE* out) {
   fmt::print(out, "OC3-Hywind rigid multibody, free (no gravity, no loads), rotor at 12.1 rpm: one large step of RK4\n");
-  fmt::print(out, "{:<30} {:>7} {:>8} {:>9} {:>10} {:>12} {:>12} {:>12}\n", "case", "steps", "ΔT [s]", "substeps", "µs/step", "µs/EoM eval",
-             "µs/outputs", "|ΔE|/E");
-  for (const auto& r : multibody::bench_multibody(20000))
-    fmt::print(out, "{:<30} {:>7} {:>8.3f} {:>9} {:>10.2f} {:>12.2f} {:>12.2f} {:>12.1e}\n", r.name, r.steps, r.dt_s, r.substeps, r.us_per_step,
-               r.us_per_evaluation, r.us_per_outputs, r.energy_drift);
+  const auto rows = multibody::bench_multibody(20000);
+  const std::size_t w = name_width(rows, [](const auto& r) { return r.name; });
+  fmt::print(out, "{:<{}} {:>7} {:>8} {:>9} {:>10} {:>12} {:>12} {:>12}\n", "case", w, "steps", "ΔT [s]", "substeps", "µs/step",
+             "µs/EoM eval", "µs/outputs", "|ΔE|/E");
+  for (const auto& r : rows)
+    fmt::print(out, "{:<{}} {:>7} {:>8.3f} {:>9} {:>10.2f} {:>12.2f} {:>12.2f} {:>12.1e}\n", r.name, w, r.steps, r.dt_s, r.substeps,
+               r.us_per_step, r.us_per_evaluation, r.us_per_outputs, r.energy_drift);
   fmt::print(out, "\nController, one advance + outputs call (ΔT = 0.0125 s, generator speed crossing regions 2 to 3)\n");
-  fmt::print(out, "{:<40} {:>9} {:>10}\n", "case", "calls", "ns/call");
-  for (const auto& r : control::bench_control("", 200000)) fmt::print(out, "{:<40} {:>9} {:>10.0f}\n", r.name, r.calls, r.ns_per_call);
+  const auto control_rows = control::bench_control("", 200000);
+  const std::size_t wc = name_width(control_rows, [](const auto& r) { return r.name; });
+  fmt::print(out, "{:<{}} {:>9} {:>10}\n", "case", wc, "calls", "ns/call");
+  for (const auto& r : control_rows) fmt::print(out, "{:<{}} {:>9} {:>10.0f}\n", r.name, wc, r.calls, r.ns_per_call);
   fmt::print(out, "(one run on this machine: compare as ratios)\n");
 }
 

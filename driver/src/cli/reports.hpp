@@ -1,5 +1,6 @@
 #pragma once
 // Text the command line prints: the run summary, the comparison table, verification tables.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -22,5 +23,13 @@ struct VerificationRow {
   bool pass;
 };
 void print_verification(std::FILE* out, const std::vector<VerificationRow>& rows);
+
+// Width of a printed table's first column: its longest case name, at least "case".
+template <typename Rows, typename Name>
+std::size_t name_width(const Rows& rows, Name name) {
+  std::size_t w = 4;
+  for (const auto& r : rows) w = std::max(w, std::string(name(r)).size());
+  return w;
+}
 
 }  // namespace fowtsim::driver

@@ -96,14 +96,19 @@ std::vector<VerificationRow> verify_sea(std::FILE* out) {
 
 void bench_hydro(std::FILE* out) {
   fmt::print(out, "OC3-Hywind spar hydrodynamics (Hydro::outputs), error against 4× finer\n");
-  fmt::print(out, "{:<34} {:>6} {:>8} {:>10} {:>11} {:>11}  {}\n", "case", "nodes", "Gauss", "µs/call", "force err", "moment err", "reference");
-  for (const auto& r : hydro::benchmarks::oc3_bench(20000))
-    fmt::print(out, "{:<34} {:>6} {:>8} {:>10.2f} {:>11.1e} {:>11.1e}  {}\n", r.name, r.strip_nodes, r.quadrature_points, r.us_per_call,
-               r.force_error, r.moment_error, r.reference);
+  const auto rows = hydro::benchmarks::oc3_bench(20000);
+  const std::size_t w = name_width(rows, [](const auto& r) { return r.name; });
+  fmt::print(out, "{:<{}} {:>6} {:>8} {:>10} {:>11} {:>11}  {}\n", "case", w, "nodes", "Gauss", "µs/call", "force err", "moment err",
+             "reference");
+  for (const auto& r : rows)
+    fmt::print(out, "{:<{}} {:>6} {:>8} {:>10.2f} {:>11.1e} {:>11.1e}  {}\n", r.name, w, r.strip_nodes, r.quadrature_points,
+               r.us_per_call, r.force_error, r.moment_error, r.reference);
   fmt::print(out, "\nOC3-Hywind mooring along a moving-platform trajectory\n");
-  fmt::print(out, "{:<34} {:>8} {:>10} {:>14}\n", "case", "calls", "µs/call", "iter./line");
-  for (const auto& r : mooring::bench_mooring(5))
-    fmt::print(out, "{:<34} {:>8} {:>10.2f} {:>14.2f}\n", r.case_name, r.calls, r.microseconds_per_call, r.iterations_per_line);
+  const auto mooring_rows = mooring::bench_mooring(5);
+  const std::size_t wm = name_width(mooring_rows, [](const auto& r) { return r.case_name; });
+  fmt::print(out, "{:<{}} {:>8} {:>10} {:>14}\n", "case", wm, "calls", "µs/call", "iter./line");
+  for (const auto& r : mooring_rows)
+    fmt::print(out, "{:<{}} {:>8} {:>10.2f} {:>14.2f}\n", r.case_name, wm, r.calls, r.microseconds_per_call, r.iterations_per_line);
   fmt::print(out, "(one run on this machine: compare as ratios)\n");
 }
 

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <memory>
 #include <numbers>
@@ -65,7 +66,9 @@ std::vector<WindBenchRow> bench_wind(double duration_fraction, int lookups) {
   const double wall = seconds_since(start);
   const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   const TurbulenceStats& s = generated.stats;
-  rows.push_back({"generate 31x31, " + std::to_string(p.turbulence.duration_s) + " s at 20 Hz (IEC NTM B, 12 m/s)",
+  char duration[32];
+  std::snprintf(duration, sizeof duration, "%g", p.turbulence.duration_s);
+  rows.push_back({"generate 31x31, " + std::string(duration) + " s at 20 Hz (IEC NTM B, 12 m/s)",
                   wall, cpu, 0.0,
                   std::to_string(s.frequencies) + " frequencies: " + std::to_string(s.dense_frequencies) +
                       " dense Cholesky, " + std::to_string(s.embedding_frequencies) + " circulant embedding, " +
