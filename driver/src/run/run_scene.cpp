@@ -115,10 +115,6 @@ std::string scene_key(const std::filesystem::path& path) {
                                holds));
 }
 
-}  // namespace
-
-namespace {
-
 RunReport run_picked_scene(const RunRequest& request, const ProgressCallback& progress) {
   if (is_beamdyn_driver_file(request.deck_path)) return run_beamdyn_case(request, progress);
   reject_foreign_input(request.deck_path);
