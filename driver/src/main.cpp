@@ -54,11 +54,12 @@ CLI::Validator positive(const char* what) {
 
 int compare_command(const std::string& ref, const std::string& test, const std::vector<std::string>& channels,
                     std::optional<double> rtol, std::optional<double> atol, const std::string& tolerance_file,
-                    const std::vector<double>& window, bool stats) {
+                    const std::vector<double>& window, bool stats, std::optional<double> wohler_exponent) {
   CompareOptions options = tolerance_file.empty() ? CompareOptions{} : load_tolerance_file(tolerance_file);
   if (rtol || atol) options.default_tolerance = {rtol.value_or(0.0), atol.value_or(0.0), 0.0};
   if (window.size() == 2) options.window = std::pair(window[0], window[1]);
   options.statistics = stats;
+  options.wohler_exponent = wohler_exponent;
   if (!channels.empty()) options.channels = channels;
   const ComparisonReport report = compare_tables(io::read_channels(ref), io::read_channels(test), options);
   print_comparison(stdout, report);
@@ -155,7 +156,13 @@ int main(int argc, char** argv) {
   std::vector<double> window;
   compare->add_option("--window", window, "compare only over T0 T1 [s] (skip start-up transients)")->expected(2);
   bool stats = false;
-  compare->add_flag("--stats", stats, "compare mean, std, min and max per channel instead of sample by sample");
+  auto* stats_flag = compare->add_flag("--stats", stats, "compare mean, std, min and max per channel instead of sample by sample");
+  double wohler = 0;
+  compare->add_option("--wohler", wohler,
+                      "with --stats: also compare each channel's damage-equivalent load of this Wöhler exponent "
+                      "(MLife: rainflow, f_eq 1 Hz over the window, no Goodman)")
+      ->check(positive("a positive Wöhler exponent"))
+      ->needs(stats_flag);
   auto* tol_opt = compare->add_option("--tolerances", tolerance_file, "per-channel tolerance file (YAML)")->check(CLI::ExistingFile);
   tol_opt->excludes(rtol_opt)->excludes(atol_opt);
 
@@ -268,7 +275,8 @@ int main(int argc, char** argv) {
     }
     if (*compare) {
       return compare_command(ref, test, channels, rtol_opt->count() ? std::optional(rtol) : std::nullopt,
-                             atol_opt->count() ? std::optional(atol) : std::nullopt, tolerance_file, window, stats);
+                             atol_opt->count() ? std::optional(atol) : std::nullopt, tolerance_file, window, stats,
+                             wohler > 0 ? std::optional(wohler) : std::nullopt);
     }
     if (*post_command) {
       for (const std::string& f : post_files) post_options.files.emplace_back(f);

@@ -24,6 +24,12 @@ io::ChannelTable sine_table(double dt, double scale_b = 1.0) {
   return t;
 }
 
+CompareOptions with_tolerance(ChannelTolerance tolerance) {
+  CompareOptions options;
+  options.default_tolerance = tolerance;
+  return options;
+}
+
 }  // namespace
 
 TEST_CASE("identical tables pass with zero error and unit correlation", "[unit][compare]") {
@@ -36,7 +42,7 @@ TEST_CASE("identical tables pass with zero error and unit correlation", "[unit][
 }
 
 TEST_CASE("one channel off by 1 % fails alone, with the metrics of a 1 % error", "[unit][compare]") {
-  const ComparisonReport r = compare_tables(sine_table(0.1), sine_table(0.1, 1.01), {.default_tolerance = {1e-3, 1e-9}});
+  const ComparisonReport r = compare_tables(sine_table(0.1), sine_table(0.1, 1.01), with_tolerance({1e-3, 1e-9, 0.0}));
   CHECK_FALSE(r.pass());
   CHECK(r.channels[0].pass);
   CHECK_FALSE(r.channels[1].pass);
@@ -46,7 +52,7 @@ TEST_CASE("one channel off by 1 % fails alone, with the metrics of a 1 % error",
 
 TEST_CASE("a test on a finer time grid is interpolated onto the reference samples", "[unit][compare]") {
   // Linear interpolation of sin on a 0.01 s grid errs by at most h²/8 = 1.25e-5.
-  const ComparisonReport r = compare_tables(sine_table(0.1), sine_table(0.01), {.default_tolerance = {0.0, 2e-5}});
+  const ComparisonReport r = compare_tables(sine_table(0.1), sine_table(0.01), with_tolerance({0.0, 2e-5, 0.0}));
   CHECK(r.pass());
   CHECK(r.channels[0].max_abs_error < 1.25e-5);
   CHECK(r.samples == 101);
@@ -67,7 +73,7 @@ TEST_CASE("requested channels that are missing fail; unrequested extras are only
 TEST_CASE("a NaN in the test fails the channel", "[unit][compare]") {
   auto test = sine_table(0.1);
   test.columns[1][5] = NAN;
-  CHECK_FALSE(compare_tables(sine_table(0.1), test, {.default_tolerance = {1.0, 1.0}}).channels[0].pass);
+  CHECK_FALSE(compare_tables(sine_table(0.1), test, with_tolerance({1.0, 1.0, 0.0})).channels[0].pass);
 }
 
 TEST_CASE("tables with no common time window are an error", "[unit][compare]") {
@@ -137,4 +143,33 @@ TEST_CASE("a constant reference channel has no ratio, and says so", "[unit][comp
   const ComparisonReport r = compare_tables(t, t, {});
   CHECK(r.channels[1].constant_reference);
   CHECK(r.pass());
+}
+
+TEST_CASE("compare --stats --wohler adds the damage-equivalent load", "[unit][compare]") {
+  // 2 + cos t against 2 + cos 2t over ten periods of the first: the same mean, std, min and max
+  // (whole periods), twice the cycles of the same range, so the DEL grows by 2^{1/m} exactly.
+  const auto table = [](double frequency) {
+    io::ChannelTable t;
+    t.names = {"Time", "B"};
+    t.units = {"s", "N"};
+    t.columns.resize(2);
+    for (int i = 0; i <= 20000; ++i) {
+      const double time = 20.0 * 3.141592653589793 * i / 20000.0;
+      t.columns[0].push_back(time);
+      t.columns[1].push_back(2.0 + std::cos(frequency * time));
+    }
+    return t;
+  };
+  CompareOptions stats = with_tolerance({0.02, 0.0, 0.0});
+  stats.statistics = true;
+  CHECK(compare_tables(table(1.0), table(2.0), stats).pass());  // the four statistics alone agree
+  stats.wohler_exponent = 4.0;
+  const ComparisonReport r = compare_tables(table(1.0), table(2.0), stats);
+  const ChannelComparison& b = r.channels.at(0);
+  // 10 and 20 cycles of range 2 over 20π s (rounding of the sampled peaks: 1e-9)
+  CHECK(b.reference_statistics[4] == Approx(2.0 * std::pow(10.0 / (20.0 * 3.141592653589793), 0.25)).epsilon(1e-9));
+  CHECK(b.test_statistics[4] == Approx(std::pow(2.0, 0.25) * b.reference_statistics[4]).epsilon(1e-9));
+  CHECK_FALSE(r.pass());
+  stats.wohler_exponent.reset();  // no exponent, no DEL
+  CHECK(std::isnan(compare_tables(table(1.0), table(2.0), stats).channels.at(0).test_statistics[4]));
 }

@@ -33,11 +33,14 @@ void print_comparison(std::FILE* out, const ComparisonReport& r) {
     return t.range_atol > 0 ? fmt::format("{:.1e}+{:.1e}·range", t.rtol, t.range_atol) : fmt::format("{:.1e}/{:.1e}", t.rtol, t.atol);
   };
   if (r.statistics) {
-    fmt::print(out, "{:<18} {:>8} {:>23} {:>23} {:>23} {:>23} {:>22}  {}\n", "channel", "unit", "mean ref → test", "std ref → test",
-               "min ref → test", "max ref → test", "tolerance", "result");
+    const std::size_t shown = r.wohler_exponent ? 5 : 4;
+    fmt::print(out, "{:<18} {:>8} {:>23} {:>23} {:>23} {:>23}", "channel", "unit", "mean ref → test", "std ref → test",
+               "min ref → test", "max ref → test");
+    if (r.wohler_exponent) fmt::print(out, " {:>23}", fmt::format("DEL(m={:g}) ref → test", *r.wohler_exponent));
+    fmt::print(out, " {:>22}  {}\n", "tolerance", "result");
     for (const auto& c : r.channels) {
       fmt::print(out, "{:<18} {:>8}", c.name, c.unit);
-      for (std::size_t k = 0; k < 4; ++k) fmt::print(out, " {:>11.4g}→{:<11.4g}", c.reference_statistics[k], c.test_statistics[k]);
+      for (std::size_t k = 0; k < shown; ++k) fmt::print(out, " {:>11.4g}→{:<11.4g}", c.reference_statistics[k], c.test_statistics[k]);
       fmt::print(out, " {:>22}  {}\n", tolerance(c.tolerance), c.pass ? "PASS" : "FAIL");
     }
   } else {

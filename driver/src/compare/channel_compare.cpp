@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "compare/window_statistics.hpp"
+#include "fowtsim/post/damage_equivalent_load.hpp"
+#include "fowtsim/post/rainflow.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/interpolation.hpp"
 
@@ -33,9 +35,17 @@ Statistics statistics(const std::vector<double>& v) {
   return s;
 }
 
+// MLife's DEL of a series over its duration (f_eq 1 Hz, residue as half cycles, no Goodman).
+double damage_equivalent_load(const std::vector<double>& values, const std::vector<double>& time, double wohler_exponent) {
+  post::FatigueParams params;
+  params.wohler_exponent = wohler_exponent;
+  return post::damage_equivalent_load(post::rainflow_cycles(values, post::ResidueCounting::half_cycles),
+                                      time.back() - time.front(), params);
+}
+
 ChannelComparison compare_channel(const std::string& name, const std::string& unit, const std::vector<double>& ref,
                                   const std::vector<double>& test, const std::vector<double>& time,
-                                  ChannelTolerance tol, bool compare_statistics) {
+                                  ChannelTolerance tol, bool compare_statistics, std::optional<double> wohler_exponent) {
   ChannelComparison c;
   c.name = name;
   c.unit = unit;
@@ -45,9 +55,12 @@ ChannelComparison compare_channel(const std::string& name, const std::string& un
   c.constant_reference = !(sr0.max > sr0.min);
   const double atol = tol.atol + tol.range_atol * (sr0.max - sr0.min);
   if (compare_statistics) {
-    c.reference_statistics = {sr0.mean, standard_deviation(ref), sr0.min, sr0.max};
-    c.test_statistics = {st0.mean, standard_deviation(test), st0.min, st0.max};
-    for (std::size_t k = 0; k < 4; ++k) {
+    const bool del = wohler_exponent && time.back() > time.front();
+    c.reference_statistics = {sr0.mean, standard_deviation(ref), sr0.min, sr0.max,
+                              del ? damage_equivalent_load(ref, time, *wohler_exponent) : kNaN};
+    c.test_statistics = {st0.mean, standard_deviation(test), st0.min, st0.max,
+                         del ? damage_equivalent_load(test, time, *wohler_exponent) : kNaN};
+    for (std::size_t k = 0; k < (del ? 5u : 4u); ++k) {
       const double e = c.test_statistics[k] - c.reference_statistics[k];
       const double excess = std::isfinite(e) ? std::abs(e) - (atol + tol.rtol * std::abs(c.reference_statistics[k]))
                                              : std::numeric_limits<double>::infinity();
@@ -94,6 +107,7 @@ ComparisonReport compare_tables(const io::ChannelTable& reference, const io::Cha
   report.t_start_s = std::max(tr.front(), tt.front());
   report.t_end_s = std::min(tr.back(), tt.back());
   report.statistics = options.statistics;
+  if (options.statistics) report.wohler_exponent = options.wohler_exponent;
   if (options.window) {
     report.t_start_s = std::max(report.t_start_s, options.window->first);
     report.t_end_s = std::min(report.t_end_s, options.window->second);
@@ -149,7 +163,8 @@ ComparisonReport compare_tables(const io::ChannelTable& reference, const io::Cha
     }
     const auto it = options.tolerances.find(name);
     const ChannelTolerance tol = it != options.tolerances.end() ? it->second : options.default_tolerance;
-    report.channels.push_back(compare_channel(name, reference.units[*rc], ref_values, test_values, time, tol, options.statistics));
+    report.channels.push_back(compare_channel(name, reference.units[*rc], ref_values, test_values, time, tol, options.statistics,
+                                              options.wohler_exponent));
   }
   if (report.channels.empty() && !report.required_missing) {
     throw InputError({"compare", {}, "", "use --channels to pick channels present in both files"},

@@ -34,6 +34,9 @@ struct CompareOptions {
   // Compare mean, std, min and max per channel instead of sample by sample (the only meaningful
   // comparison of turbulent runs with different seeds); the tolerances apply to each statistic.
   bool statistics = false;
+  // With statistics: also the damage-equivalent load of this Wöhler exponent (MLife: rainflow with
+  // the residue as half cycles, f_eq 1 Hz over the compared window, no Goodman correction).
+  std::optional<double> wohler_exponent;
 };
 
 struct ChannelComparison {
@@ -46,8 +49,9 @@ struct ChannelComparison {
   double worst_excess = 0;          // max of |test − ref| − tolerance (≤ 0 passes)
   double worst_time_s = 0;          // time of the worst excess [s]
   bool constant_reference = false;  // the reference channel does not change (ratios undefined)
-  // With CompareOptions::statistics: mean, std, min, max of reference and test.
-  std::array<double, 4> reference_statistics{}, test_statistics{};
+  // With CompareOptions::statistics: mean, std, min, max and the DEL (NaN unless a Wöhler exponent
+  // was given) of reference and test.
+  std::array<double, 5> reference_statistics{}, test_statistics{};
   ChannelTolerance tolerance;
   bool pass = false;
 };
@@ -59,6 +63,7 @@ struct ComparisonReport {
   std::vector<std::string> required_missing_names;  // channels asked for and absent (each once)
   bool required_missing = false;                 // a channel the user asked for is absent
   bool statistics = false;                       // statistics compared instead of samples
+  std::optional<double> wohler_exponent;         // the DEL's Wöhler exponent, when compared
   double t_start_s = 0, t_end_s = 0;             // compared window (overlap of both files) [s]
   std::size_t samples = 0;                       // reference samples inside the window
   bool pass() const;
