@@ -181,7 +181,7 @@ TEST_CASE("output names: a BeamDyn driver input writes runs/bd_driver.h5, not ru
   CHECK_FALSE(std::filesystem::exists(dir / "runs/.h5"));
 }
 
-TEST_CASE("--dt sets a BeamDyn run's time step, and is refused where the deck sets the steps", "[verification][run]") {
+TEST_CASE("run --dt sets a BeamDyn run's time step, and is refused where the deck sets the steps", "[verification][run]") {
   // The BeamDyn Az00 case over 1 s at its own step, then at twice it: half the rows.
   const auto shared = testing::shared_dir_or_skip();
   const auto dir = testing::scratch_dir("guard_dt");

@@ -50,7 +50,7 @@ Schema blades_schema() {
   // ≤ 2e-5 of their standard deviation against rebuilding at every step, over 200× less than
   // halving Δt changes them (flexible_turbine_tests.cpp checks the same in steady wind). The beam
   // module's tighter defaults (20 steps, 0.002 rad) are set on the seeds' large-deflection
-  // benchmarks and cost 25 % more run time here; a rebuild at every step costs 2×.
+  // benchmarks and cost 30 % more run time here; a rebuild at every step costs 2×.
   fields.push_back({"step_matrix_max_age", Schema::integer().at_least(1).default_value(40)
                                                .doc("blade steps before the factored step matrix is rebuilt (1: every step, the seed's scheme)")});
   fields.push_back({"step_matrix_max_rotation_rad", Schema::number().greater_than(0.0).default_value(0.02)
