@@ -159,6 +159,13 @@ TEST_CASE("a calculated channel is the magnitude of its components, with their D
   write_text(dir / "del.yaml", "calculated:\n  Fxz: {magnitude_of: [Fx, Fz]}\nchannels:\n  default: {wohler_exponent: 10}\n");
   CHECK_THROWS_WITH(analyse_post(options), Catch::Contains("run.h5") && Catch::Contains("no channel Fz") &&
                                                Catch::Contains("del.yaml:2"));
+  // A name the file already has, and components of different units, are refused too.
+  write_run(dir / "mixed.h5", {"Fx", "Mx"}, {"kN", "kN-m"}, t, {cosine(3.0, 0.0, 50), fy});
+  options.files = {dir / "mixed.h5"};
+  write_text(dir / "del.yaml", "calculated:\n  Fx: {magnitude_of: [Fx, Mx]}\nchannels:\n  default: {wohler_exponent: 10}\n");
+  CHECK_THROWS_WITH(analyse_post(options), Catch::Contains("already a channel"));
+  write_text(dir / "del.yaml", "calculated:\n  FM: {magnitude_of: [Fx, Mx]}\nchannels:\n  default: {wohler_exponent: 10}\n");
+  CHECK_THROWS_WITH(analyse_post(options), Catch::Contains("kN-m") && Catch::Contains("del.yaml:2"));
 }
 
 TEST_CASE("a fatigue configuration with a misspelt key is refused with its file and line", "[unit]") {

@@ -68,12 +68,18 @@ struct Analysis {
 // naming the file, the channel and the configuration entry.
 void add_calculated(io::ChannelTable& table, const std::vector<CalculatedChannel>& calculated, const std::string& file) {
   for (const CalculatedChannel& c : calculated) {
+    const auto refuse = [&](const std::string& why, const std::string& wanted) {
+      throw InputError({"post", std::nullopt, c.name, wanted}, fmt::format("{}: {} ({})", file, why, c.location));
+    };
+    if (table.find(c.name)) refuse(fmt::format("the calculated channel {} is already a channel of the file", c.name), "a new name");
     std::vector<std::size_t> parts;
     for (const std::string& component : c.components) {
       const std::optional<std::size_t> column = table.find(component);
-      if (!column)
-        throw InputError({"post", std::nullopt, c.name, "a channel of every file"},
-                         fmt::format("{}: no channel {} for the calculated channel {} ({})", file, component, c.name, c.location));
+      if (!column) refuse(fmt::format("no channel {} for the calculated channel {}", component, c.name), "a channel of every file");
+      if (!parts.empty() && table.units[*column] != table.units[parts.front()])
+        refuse(fmt::format("the calculated channel {} adds {} [{}] to {} [{}]", c.name, component, table.units[*column],
+                           table.names[parts.front()], table.units[parts.front()]),
+               "components of one unit");
       parts.push_back(*column);
     }
     std::vector<double> magnitude(table.rows(), 0.0);
