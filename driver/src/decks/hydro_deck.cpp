@@ -1,5 +1,7 @@
 #include "decks/hydro_deck.hpp"
 
+#include <filesystem>
+
 #include <fmt/format.h>
 
 #include "decks/deck_helpers.hpp"
@@ -40,6 +42,30 @@ Schema current_schema() {
   });
 }
 
+Schema potential_flow_schema() {
+  return Schema::map({
+      {"wamit_root", Schema::string().doc("WAMIT output without extension, relative to this deck file: reads ROOT.1 "
+                                          "(A, B), ROOT.3 (excitation) and ROOT.hst (HydroDyn PotFile)")},
+      {"length_scale_m", Schema::number().greater_than(0.0).default_value(1.0).doc("WAMIT length scale (WAMITULEN)")},
+      {"radiation", Schema::choice({"convolution", "state_space"}).default_value("convolution")
+                        .doc("radiation memory: convolution of the kernel over the window (RdtnMod 1) or its "
+                             "fitted state-space form (RdtnMod 2, Kung's realisation)")},
+      {"radiation_window_s", Schema::number().greater_than(0.0).default_value(60.0)
+                                 .doc("memory kept by the convolution, and the span the state space is fitted on (RdtnTMax)")},
+      {"state_space_tolerance", Schema::number().greater_than(0.0).at_most(0.5).default_value(0.02)
+                                    .doc("state_space: relative RMS error allowed per kernel entry")},
+      {"state_space_max_order", Schema::integer().at_least(2).at_most(40).default_value(20)
+                                    .doc("state_space: largest order per kernel entry")},
+      {"excitation", Schema::boolean().default_value(true)
+                         .doc("first-order wave excitation from ROOT.3 at the initial position (ExctnMod 1)")},
+  });
+}
+
+std::filesystem::path beside_deck(const io::ValidatedDeck& d, const std::string& key) {
+  const std::filesystem::path file = d.string(key);
+  return file.is_absolute() ? file : std::filesystem::path(d.location(key).file).parent_path() / file;
+}
+
 }  // namespace
 
 Schema hydro_schema() {
@@ -48,6 +74,13 @@ Schema hydro_schema() {
       {"gravity_m_s2", Schema::number().greater_than(0.0).default_value(9.80665).doc("gravity")},
       {"surface", Schema::choice({"still_water", "wave_elevation"}).default_value("still_water")
                       .doc("where Morison strips stop: z = 0, or the wave elevation at each member")},
+      {"hydrostatics", Schema::choice({"nonlinear", "linear"}).default_value("nonlinear")
+                           .doc("buoyancy of the members at the instantaneous pose, or ρgV0 − C_hst q with C_hst "
+                                "from potential_flow's ROOT.hst (HydroDyn with WAMIT)")},
+      {"displaced_volume_m3", Schema::number().greater_than(0.0).optional()
+                                  .doc("linear hydrostatics: displaced volume at rest V0 (PtfmVol0)")},
+      {"potential_flow", potential_flow_schema().optional()
+                             .doc("WAMIT added mass, radiation memory and excitation; the members then carry drag only")},
       {"hydrostatic_quadrature_points", Schema::integer().at_least(2).at_most(64).default_value(16)
                                             .doc("Gauss points over an obliquely cut member")},
       {"members", Schema::sequence(member_schema()).min_items(1).doc("circular members, split at joints")},
@@ -59,8 +92,9 @@ Schema hydro_schema() {
   });
 }
 
-hydro::Params hydro_params(const io::ValidatedDeck& d) {
-  hydro::Params p;
+HydroDeck read_hydro_deck(const io::ValidatedDeck& d, double large_step_s) {
+  HydroDeck deck;
+  hydro::Params& p = deck.params;
   p.water_density_kg_m3 = d.number("water_density_kg_m3");
   p.gravity_m_s2 = d.number("gravity_m_s2");
   p.surface = d.string("surface") == "wave_elevation" ? hydro::SurfaceModel::wave_elevation
@@ -99,8 +133,46 @@ hydro::Params hydro_params(const io::ValidatedDeck& d) {
   p.added_stiffness = mat6(d, "added_stiffness");
   p.added_damping = mat6(d, "added_damping");
   p.added_quadratic_damping = mat6(d, "added_quadratic_damping");
+  const bool linear = d.string("hydrostatics") == "linear";
+  if (linear && (!d.has("potential_flow") || !d.has("displaced_volume_m3")))
+    throw InputError({"hydro", std::nullopt, "hydrostatics", "potential_flow (its ROOT.hst) and displaced_volume_m3"},
+                     where(d, "hydrostatics") + ": linear hydrostatics need the potential_flow section (C_hst from "
+                                                "ROOT.hst) and displaced_volume_m3");
+  if (d.has("potential_flow")) {
+    const io::ValidatedDeck f = d.section("potential_flow");
+    const std::filesystem::path root = beside_deck(f, "wamit_root");
+    const io::WamitScales scales{p.water_density_kg_m3, p.gravity_m_s2, f.number("length_scale_m")};
+    const auto with_extension = [&](const char* extension) { return std::filesystem::path(root.string() + extension); };
+    try {
+      const io::WamitRadiation radiation = io::read_wamit_radiation(with_extension(".1"), scales);
+      if (!radiation.added_mass_infinite_frequency)
+        throw InputError({"io.wamit", std::nullopt, "PER = 0", "the infinite-frequency added mass"},
+                         with_extension(".1").string() + ": no PER = 0 rows (infinite-frequency added mass)");
+      hydro::RadiationOptions options;
+      options.method = f.string("radiation") == "state_space" ? hydro::RadiationMethod::state_space
+                                                              : hydro::RadiationMethod::convolution;
+      options.window_s = f.number("radiation_window_s");
+      options.step_s = large_step_s;
+      options.fit_tolerance = f.number("state_space_tolerance");
+      options.fit_max_order = static_cast<int>(f.integer("state_space_max_order"));
+      hydro::PotentialFlowParams pf;
+      pf.radiation = hydro::make_radiation_model({radiation.frequencies_rad_s, radiation.damping,
+                                                  *radiation.added_mass_infinite_frequency},
+                                                 options);
+      pf.excitation = f.boolean("excitation");
+      p.potential_flow = std::move(pf);
+      if (f.boolean("excitation")) deck.excitation = io::read_wamit_excitation(with_extension(".3"), scales);
+      if (linear) p.hydrostatic_stiffness = io::read_wamit_hydrostatics(with_extension(".hst"), scales);
+    } catch (const InputError& e) {
+      throw InputError(e.context(), where(f, "wamit_root") + ": " + e.message());
+    }
+  }
+  if (linear) {
+    p.hydrostatics = hydro::Hydrostatics::linear;
+    p.displaced_volume_m3 = d.number("displaced_volume_m3");
+  }
   located(d, [&] { hydro::validate(p); });
-  return p;
+  return deck;
 }
 
 }  // namespace fowtsim::driver

@@ -156,7 +156,7 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
     throw InputError({"floating", std::nullopt, "structure.rotor.flexible_blades", "a blades section"},
                      where(deck, "structure.rotor.flexible_blades") + ": flexible blades need the `blades` section (their structure)");
   multibody::State state = multibody::Multibody::make_state(model);
-  SeaModules sea(deck, platform_motion(state));
+  SeaModules sea(deck, platform_motion(state), deck.number("simulation.dt_s"));
   std::optional<RotorAero> rotor;
   if (deck.has("aero")) {
     rotor.emplace(deck, structure);
@@ -245,12 +245,9 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
       controller->advance(u, t, dt);
       stage_loads.hold(controller->output().generator_torque_N_m, controller->output().blade_pitch_rad[0]);
     }
-    if (!blades) {
-      multibody::Multibody::advance(model, stage_loads, t, dt, state);
-      max_rotor_speed = std::max(max_rotor_speed, std::abs(state.rotor_speed_rad_s));
-      return;
-    }
-    blades->advance(stage_loads, shaft_at, demands(), t, dt, state);
+    if (!blades) multibody::Multibody::advance(model, stage_loads, t, dt, state);
+    else blades->advance(stage_loads, shaft_at, demands(), t, dt, state);
+    sea.advance(t + dt, platform_motion(state));
     max_rotor_speed = std::max(max_rotor_speed, std::abs(state.rotor_speed_rad_s));
   };
   SeaModules::Memory sea_memory;
@@ -295,9 +292,7 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
       a.io(pitch);
       stage_loads.hold(torque, pitch);
       if (controller) controller->checkpoint(a);
-      SeaModules::Memory memory = sea.memory();
-      a.io(memory);
-      sea.restore(memory);
+      sea.checkpoint(a);
       if (rotor) rotor->checkpoint(a);
       if (blades) blades->checkpoint(a);
     };

@@ -110,7 +110,7 @@ RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& 
   const io::ValidatedDeck deck = io::read_deck(platform_scene_schema(), request.deck_path);
   const Trajectory trajectory = read_trajectory(deck.section("platform_motion"));
   // Wave kinematics at the strip nodes of the mean pose.
-  SeaModules sea(deck, platform_motion(trajectory.mean, Vec6::Zero()));
+  SeaModules sea(deck, platform_motion(trajectory.mean, Vec6::Zero()), deck.number("simulation.dt_s"));
 
   std::vector<ChannelInfo> all = platform_channels();
   for (const ChannelInfo& c : sea.channels()) all.push_back(c);
@@ -124,15 +124,17 @@ RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& 
   // The motion is prescribed: a step only evaluates the sea at its end, every step, so the
   // mooring solver's warm starts — and the results — do not depend on output decimation; a row
   // reads the evaluation of its time.
-  auto evaluate = [&](double t) {
+  // A step first moves the radiation memory (potential flow) to its end.
+  auto evaluate = [&](double t, bool end_of_step) {
     Vec6 q, q_dot;
     trajectory.at(t, q, q_dot);
     for (int k = 0; k < 6; ++k) values[k] = k < 3 ? q[k] : q[k] / kDegree;
+    if (end_of_step) sea.advance(t, platform_motion(q, q_dot));
     sea.evaluate(t, platform_motion(q, q_dot));
     sea.channel_values(t, std::span<double>(values).subspan(6));
   };
-  evaluate(0.0);
-  scene.step = [&](double t, double dt) { evaluate(t + dt); };
+  evaluate(0.0, false);
+  scene.step = [&](double t, double dt) { evaluate(t + dt, true); };
   scene.row = [&](double, std::span<double> row) {
     for (std::size_t k = 0; k < picked.size(); ++k) row[k] = values[picked[k]];
   };

@@ -4,21 +4,37 @@
 
 #include <algorithm>
 
+#include "decks/deck_helpers.hpp"
 #include "decks/hydro_deck.hpp"
 #include "decks/mooring_deck.hpp"
 #include "decks/waves_deck.hpp"
+#include "fowtsim/core/error.hpp"
 #include "fowtsim/mooring/stiffness.hpp"
 
 namespace fowtsim::driver {
 
-SeaModules::SeaModules(const io::ValidatedDeck& deck, const FrameMotion& initial_pose)
+SeaModules::SeaModules(const io::ValidatedDeck& deck, const FrameMotion& initial_pose, double large_step_s)
     : wave_params_(deck.has("waves") ? wave_params(deck.section("waves")) : waves::WaveParams{}),
       has_waves_(deck.has("waves")),
       sea_(waves::Waves::make_params(wave_params_)) {
-  if (deck.has("hydro")) hydro_ = hydro_params(deck.section("hydro"));
+  std::optional<io::WamitExcitation> excitation_table;
+  if (deck.has("hydro")) {
+    HydroDeck h = read_hydro_deck(deck.section("hydro"), large_step_s);
+    hydro_ = std::move(h.params);
+    excitation_table = std::move(h.excitation);
+  }
   if (deck.has("mooring")) mooring_ = mooring_params(deck.section("mooring"));
   if (hydro_) {
     hydro_in_ = hydro::make_input(*hydro_);
+    hydro_in_.platform = initial_pose;
+    hydro_state_ = hydro::Hydro::make_state(*hydro_, hydro_in_);
+    if (excitation_table) {
+      try {
+        excitation_ = std::make_unique<WaveExcitation>(*sea_.field, *excitation_table);
+      } catch (const InputError& e) {
+        throw InputError(e.context(), where(deck, "hydro.potential_flow") + ": " + e.message());
+      }
+    }
     if (!sea_.field->calm()) {
       hydro::Points points(3, hydro::node_count(*hydro_));
       hydro::strip_points(*hydro_, initial_pose, VecX::Zero(static_cast<Eigen::Index>(hydro_->members.size())), points);
@@ -39,6 +55,7 @@ SeaModules::SeaModules(const io::ValidatedDeck& deck, const FrameMotion& initial
     }
   }
   if (mooring_) mooring_state_ = mooring::QuasiStaticMooring::make_state(*mooring_);
+  if (hydro_) hydro_channel_count_ = hydro::Hydro::channels(*hydro_).size();
   channel_count_ = channels().size();
 }
 
@@ -58,9 +75,17 @@ void SeaModules::evaluate(double t, const FrameMotion& pose) {
         hydro_in_.dynamic_pressure_Pa[c] = k.dynamic_pressure_Pa;
       }
     }
-    hydro_out_ = hydro::Hydro::outputs(*hydro_, hydro_in_, {});
+    if (excitation_) hydro_in_.wave_excitation = excitation_->at(t);
+    hydro_out_ = hydro::Hydro::outputs(*hydro_, hydro_in_, hydro_state_);
   }
   if (mooring_) mooring_out_ = mooring::QuasiStaticMooring::evaluate(*mooring_, {pose, t}, mooring_state_);
+}
+
+void SeaModules::advance(double t, const FrameMotion& pose) {
+  if (!hydro_ || !hydro_->potential_flow) return;
+  hydro_in_.platform = pose;
+  const double dt = hydro_->potential_flow->radiation.step_s;
+  hydro::Hydro::advance(*hydro_, hydro_in_, t - dt, dt, hydro_state_);
 }
 
 Vec6 SeaModules::platform_load() const {
@@ -86,9 +111,8 @@ void SeaModules::channel_values(double t, std::span<double> out) const {
   std::size_t k = 0;
   for (; k < wo.probe_count; ++k) out[k] = wo.elevation_m[k];
   if (hydro_) {
-    const auto v = hydro::channel_values(hydro_out_);
-    std::copy(v.begin(), v.end(), out.begin() + static_cast<long>(k));
-    k += v.size();
+    hydro::channel_values(*hydro_, hydro_out_, out.subspan(k, hydro_channel_count_));
+    k += hydro_channel_count_;
   }
   if (mooring_) mooring::QuasiStaticMooring::channel_values(*mooring_, mooring_out_, out.subspan(k, channel_count_ - k));
 }
@@ -107,6 +131,7 @@ std::vector<std::uint64_t> SeaModules::seeds() const {
 
 std::vector<std::string> SeaModules::warnings() const {
   std::vector<std::string> out;
+  if (excitation_ && excitation_->coverage_warning()) out.push_back(*excitation_->coverage_warning());
   if (!has_waves_) return out;
   // Deep-water steepness H/L against the breaking limit 1/7 (Michell 1893): a linear sea that
   // steep is outside the theory the wave model rests on.

@@ -17,16 +17,20 @@
 #include "fowtsim/io/schema.hpp"
 #include "fowtsim/mooring/quasi_static_mooring.hpp"
 #include "fowtsim/waves/waves_module.hpp"
+#include "scenes/wave_excitation.hpp"
 
 namespace fowtsim::driver {
 
 class SeaModules {
  public:
-  // Reads the deck's `waves`, `hydro` and `mooring` sections (each optional).
-  SeaModules(const io::ValidatedDeck& deck, const FrameMotion& initial_pose);
+  // Reads the deck's `waves`, `hydro` and `mooring` sections (each optional); `large_step_s` is the
+  // platform's step (potential-flow radiation keeps its memory at it).
+  SeaModules(const io::ValidatedDeck& deck, const FrameMotion& initial_pose, double large_step_s);
 
-  // Hydro and mooring at `pose` and time t; the results stay until the next call.
+  // Hydro and mooring at `pose` and time t ∈ [t_n, t_n + ΔT]; the results stay until the next call.
   void evaluate(double t, const FrameMotion& pose);
+  // Ends the step at t_n + ΔT = t with the platform at `pose`: the radiation memory moves on.
+  void advance(double t, const FrameMotion& pose);
   // Total load on the platform about its reference point, inertial frame [N; N·m].
   Vec6 platform_load() const;
   // Hydro added mass about the reference point, inertial frame (zero without hydro).
@@ -48,6 +52,12 @@ class SeaModules {
   using Memory = mooring::QuasiStaticMooring::State;
   const Memory& memory() const { return mooring_state_; }
   void restore(const Memory& memory) { mooring_state_ = memory; }
+  // The whole changing state (warm start and radiation memory), for checkpoints.
+  template <class Archive>
+  void checkpoint(Archive& a) {
+    a.io(mooring_state_);
+    hydro_state_.radiation.checkpoint(a);
+  }
 
  private:
   waves::WaveParams wave_params_;
@@ -57,10 +67,13 @@ class SeaModules {
   std::optional<mooring::MooringParams> mooring_;
   std::unique_ptr<waves::PrecomputedKinematics> kinematics_;
   std::unique_ptr<waves::PrecomputedKinematics> waterline_elevation_;  // wave_elevation surface only
+  std::unique_ptr<WaveExcitation> excitation_;  // potential flow with excitation only
   hydro::Hydro::Input hydro_in_;
+  hydro::Hydro::State hydro_state_;
   hydro::Hydro::Output hydro_out_;
   mooring::QuasiStaticMooring::State mooring_state_{};
   mooring::QuasiStaticMooring::Output mooring_out_{};
+  std::size_t hydro_channel_count_ = 0;
   std::size_t channel_count_ = 0;
 };
 

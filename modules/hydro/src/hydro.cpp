@@ -130,7 +130,38 @@ void waterline_points(const Params& params, const FrameMotion& platform, Eigen::
   }
 }
 
-Hydro::Output Hydro::outputs(const Params& params, const Input& in, const State&) {
+Vec6 generalised_velocity(const FrameMotion& platform) {
+  Vec6 v;
+  v << platform.velocity_m_s, platform.orientation * platform.angular_velocity_rad_s;
+  return v;
+}
+
+Hydro::State Hydro::make_state(const Params& params, const Input& in) {
+  State s;
+  if (params.potential_flow)
+    s.radiation = make_radiation_state(params.potential_flow->radiation, in.time_s, generalised_velocity(in.platform));
+  return s;
+}
+
+Hydro::State Hydro::make_state(const Params& params) { return make_state(params, make_input(params)); }
+
+void Hydro::advance(const Params& params, const Input& in, double t, double dt, State& state) {
+  if (!params.potential_flow) return;
+  check_pose(in.platform, t + dt);
+  advance_radiation(params.potential_flow->radiation, t + dt, generalised_velocity(in.platform), state.radiation);
+}
+
+// Linear hydrostatics (HydroDyn with WAMIT): ρ g V0 up at the reference point, − C_hst q with
+// q = [r_ref; Euler 1-2-3 angles], the same small-angle coordinates as the added linear terms.
+static Vec6 linear_hydrostatic_load(const Params& params, const FrameMotion& pose) {
+  Vec6 q;
+  q << pose.position_m, matrix_to_euler123(pose.orientation);
+  Vec6 f = -params.hydrostatic_stiffness * q;
+  f[2] += params.water_density_kg_m3 * params.gravity_m_s2 * params.displaced_volume_m3;
+  return f;
+}
+
+Hydro::Output Hydro::outputs(const Params& params, const Input& in, const State& state) {
   check_sizes(params, in);
   check_pose(in.platform, in.time_s);
   Output out;
@@ -162,8 +193,15 @@ Hydro::Output Hydro::outputs(const Params& params, const Input& in, const State&
       Vec3(0.0, 0.0, rho_g));
   out.centre_of_buoyancy_m = displaced.volume_m3 > 0.0 ? Vec3(displaced.first_moment_m4 / displaced.volume_m3)
                                                        : motion.reference_m;
+  if (params.hydrostatics == Hydrostatics::linear) out.buoyancy = linear_hydrostatic_load(params, in.platform);
   out.added_linear = added_linear_load(params, in.platform, motion.angular_velocity);
-  out.total = out.buoyancy + out.morison + out.added_linear;
+  if (params.potential_flow) {
+    const PotentialFlowParams& pf = *params.potential_flow;
+    out.added_mass += pf.radiation.added_mass_infinite_frequency;
+    out.radiation = radiation_load(pf.radiation, state.radiation, in.time_s, generalised_velocity(in.platform));
+    if (pf.excitation) out.excitation = in.wave_excitation;
+  }
+  out.total = out.buoyancy + out.morison + out.added_linear + out.radiation + out.excitation;
   if (!out.total.allFinite() || !out.added_mass.allFinite()) {
     throw NumericalError({"hydro", in.time_s, "hydro load", "check the platform state and wave inputs"},
                          "non-finite hydrodynamic load or added mass");
@@ -171,17 +209,19 @@ Hydro::Output Hydro::outputs(const Params& params, const Input& in, const State&
   return out;
 }
 
-std::vector<ChannelInfo> Hydro::channels(const Params&) {
+std::vector<ChannelInfo> Hydro::channels(const Params& params) {
   std::vector<ChannelInfo> all;
   const char* axes[3] = {"x", "y", "z"};
   const struct {
     const char* prefix;
     const char* what;
-  } parts[4] = {{"Hydro", "total hydrodynamic + hydrostatic load (buoyancy, Morison, added linear)"},
-                {"B1HDS", "hydrostatic load (nonlinear buoyancy)"},
+  } parts[6] = {{"Hydro", "total hydrodynamic + hydrostatic load (buoyancy, Morison, added linear, potential flow)"},
+                {"B1HDS", "hydrostatic load (buoyancy, nonlinear or linear)"},
                 {"HydroMor", "Morison load (strips and end effects, without the added-mass reaction)"},
-                {"HydroAdd", "additional linear load (AddF0, AddCLin, AddBLin, AddBQuad)"}};
-  for (const auto& part : parts) {
+                {"HydroAdd", "additional linear load (AddF0, AddCLin, AddBLin, AddBQuad)"},
+                {"B1Rdt", "potential-flow radiation memory load −∫K q̇"},
+                {"B1Wvs", "potential-flow first-order wave excitation"}};
+  for (const auto& part : std::span(parts, params.potential_flow ? 6 : 4)) {
     for (const char* a : axes) {
       all.push_back({fmt::format("{}F{}i", part.prefix, a), "N",
                      fmt::format("{}: force along inertial {}", part.what, a), "hydro"});
@@ -195,13 +235,14 @@ std::vector<ChannelInfo> Hydro::channels(const Params&) {
   return all;
 }
 
-std::array<double, kChannelCount> channel_values(const Hydro::Output& o) {
-  std::array<double, kChannelCount> v{};
-  const Vec6* parts[4] = {&o.total, &o.buoyancy, &o.morison, &o.added_linear};
-  for (int p = 0; p < 4; ++p) {
-    for (int i = 0; i < 6; ++i) v[6 * p + i] = (*parts[p])[i];
+void channel_values(const Params& params, const Hydro::Output& o, std::span<double> values) {
+  const Vec6* parts[6] = {&o.total, &o.buoyancy, &o.morison, &o.added_linear, &o.radiation, &o.excitation};
+  const int count = params.potential_flow ? 6 : 4;
+  if (values.size() != static_cast<std::size_t>(6 * count))
+    misuse("channel values", fmt::format("{} values for {} channels", values.size(), 6 * count));
+  for (int p = 0; p < count; ++p) {
+    for (int i = 0; i < 6; ++i) values[static_cast<std::size_t>(6 * p + i)] = (*parts[p])[i];
   }
-  return v;
 }
 
 }  // namespace fowtsim::hydro

@@ -50,6 +50,8 @@ void add_member_morison(const Params& params, const MemberParams& member,
   const Mat3 transverse = Mat3::Identity() - e * e.transpose();
   const Mat3 axial = e * e.transpose();
   const Vec3& omega = motion.angular_velocity;
+  // With potential flow the members carry viscous drag only (params.hpp, PotentialFlowParams).
+  const bool inertia = !params.potential_flow;
 
   // Strips: midpoint rule over the submerged part of the axis (second order in ds, tests).
   const int n = member.strips;
@@ -69,6 +71,10 @@ void add_member_morison(const Params& params, const MemberParams& member,
       const Vec3 u_rel_n = transverse * (u - body_velocity);
       // Quadratic drag on the normal relative velocity (seed 004, Morison drag term).
       Vec3 f = 0.5 * rho * member.cd * 2.0 * R * u_rel_n.norm() * ds * u_rel_n;
+      if (!inertia) {
+        add_point(r, f, 0.0, transverse, load, added_mass);
+        continue;
+      }
       // Froude–Krylov + diffraction inertia on the normal fluid acceleration (seed 004: ρ A C_m u̇).
       f += rho * (1.0 + member.ca) * area * ds * (transverse * in.fluid_acceleration_m_s2.col(node));
       // Axial Froude–Krylov on the sloping wall of a taper: −∮ p n dS over the slice = p dA/ds ds e.
@@ -97,8 +103,12 @@ void add_member_morison(const Params& params, const MemberParams& member,
     const double reference_volume = 2.0 / 3.0 * kPi * R * R * R;  // half sphere on the end plate
     const Vec3 u = in.fluid_velocity_m_s.col(node) + current_velocity(params.current, p.z());
     const double u_axial = e.dot(u - motion.velocity_m_s - omega.cross(r));
-    Vec3 f = -ends[k].cp * in.dynamic_pressure_Pa[node] * area * ends[k].sign * e;
-    f += 0.5 * rho * ends[k].cd * area * std::abs(u_axial) * u_axial * e;
+    Vec3 f = 0.5 * rho * ends[k].cd * area * std::abs(u_axial) * u_axial * e;
+    if (!inertia) {
+      add_point(r, f, 0.0, axial, load, added_mass);
+      continue;
+    }
+    f -= ends[k].cp * in.dynamic_pressure_Pa[node] * area * ends[k].sign * e;
     f += rho * ends[k].ca * reference_volume * e.dot(in.fluid_acceleration_m_s2.col(node)) * e;
     const double m = rho * ends[k].ca * reference_volume;
     f -= m * e.dot(omega.cross(omega.cross(r))) * e;

@@ -68,6 +68,13 @@ void validate(const Params& params) {
   if (!params.added_quadratic_damping.allFinite()) {
     p.lines.push_back("hydro.added_quadratic_damping: non-finite entry");
   }
+  if (params.hydrostatics == Hydrostatics::linear) {
+    p.require(params.displaced_volume_m3 > 0.0 && std::isfinite(params.displaced_volume_m3), "displaced_volume_m3",
+              params.displaced_volume_m3, "> 0 m^3 with linear hydrostatics");
+    if (!params.hydrostatic_stiffness.allFinite()) p.lines.push_back("hydro.hydrostatic_stiffness: non-finite entry");
+  }
+  if (params.potential_flow && !params.potential_flow->radiation.added_mass_infinite_frequency.allFinite())
+    p.lines.push_back("hydro.potential_flow: non-finite infinite-frequency added mass");
   p.require(params.hydrostatic_quadrature_points >= 2 && params.hydrostatic_quadrature_points <= 64,
             "hydrostatic_quadrature_points", params.hydrostatic_quadrature_points, "an integer in [2, 64]");
   if (p.lines.empty()) return;

@@ -47,7 +47,7 @@ TEST_CASE("node layout: strips then ends, per member", "[unit][hydro]") {
   CHECK(points(2, 25) == -12.0);                               // member 0 end B
   CHECK(points(2, node_offset(p, 2) + 3) == Approx(-0.5));     // top member: strips over the 4 wet m
   CHECK(points(2, node_count(p) - 1) == 10.0);                 // top member end B (dry)
-  CHECK(Hydro::channels(p).size() == static_cast<std::size_t>(kChannelCount));
+  CHECK(Hydro::channels(p).size() == 24u);  // four parts × six components without potential flow
   CHECK(Hydro::channels(p)[0].name == "HydroFxi");
   CHECK(Hydro::channels(p)[5].name == "HydroMzi");
 }

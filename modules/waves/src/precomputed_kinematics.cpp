@@ -14,6 +14,7 @@
 #include "depth_factors.hpp"
 #include "fft.hpp"
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/interpolation.hpp"
 
 namespace fowtsim::waves {
 namespace {
@@ -236,31 +237,7 @@ std::size_t PrecomputedKinematics::wheeler_levels(std::size_t index) const {
   return columns_.at(points_.at(index).column).levels_m.size();
 }
 
-PrecomputedKinematics::TimeStencil PrecomputedKinematics::time_stencil(double t) const {
-  if (!std::isfinite(t))
-    throw NumericalError({"waves", std::nullopt, "time", "check the time handed to the wave lookup"},
-                         fmt::format("non-finite time {}", t));
-  const double tau = t - duration_s_ * std::floor(t / duration_s_);  // [0, D] (D by round-off)
-  const double u = tau / dt_s_;
-  double whole = std::floor(u);
-  const double s = u - whole;
-  auto j = static_cast<std::size_t>(whole);
-  const std::size_t m = samples_;
-  j %= m;
-  TimeStencil ts;
-  ts.index[0] = (j + m - 1) % m;
-  ts.index[1] = j;
-  ts.index[2] = (j + 1) % m;
-  ts.index[3] = (j + 2) % m;
-  // 4-point Lagrange on the nodes −1, 0, 1, 2 at s ∈ [0, 1).
-  ts.weight[0] = -s * (s - 1.0) * (s - 2.0) / 6.0;
-  ts.weight[1] = (s + 1.0) * (s - 1.0) * (s - 2.0) / 2.0;
-  ts.weight[2] = -(s + 1.0) * s * (s - 2.0) / 2.0;
-  ts.weight[3] = (s + 1.0) * s * (s - 1.0) / 6.0;
-  return ts;
-}
-
-double PrecomputedKinematics::interpolate_elevation(const Column& column, const TimeStencil& ts) const {
+double PrecomputedKinematics::interpolate_elevation(const Column& column, const PeriodicStencil& ts) const {
   const double* eta = storage_.data() + column.elevation_offset;
   return ts.weight[0] * eta[ts.index[0]] + ts.weight[1] * eta[ts.index[1]] + ts.weight[2] * eta[ts.index[2]] +
          ts.weight[3] * eta[ts.index[3]];
@@ -268,13 +245,13 @@ double PrecomputedKinematics::interpolate_elevation(const Column& column, const 
 
 double PrecomputedKinematics::elevation(std::size_t index, double t) const {
   const Point& point = points_.at(index);
-  return interpolate_elevation(columns_[point.column], time_stencil(t));
+  return interpolate_elevation(columns_[point.column], periodic_cubic_stencil(t, duration_s_, samples_));
 }
 
 WaveKinematics PrecomputedKinematics::at(std::size_t index, double t) const {
   const Point& point = points_.at(index);
   const Column& column = columns_[point.column];
-  const TimeStencil ts = time_stencil(t);
+  const PeriodicStencil ts = periodic_cubic_stencil(t, duration_s_, samples_);
   WaveKinematics out;
   out.elevation_m = interpolate_elevation(column, ts);
   double q[kQuantities] = {0.0, 0.0, 0.0, 0.0, 0.0};

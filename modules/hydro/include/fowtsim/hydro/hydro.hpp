@@ -11,7 +11,7 @@
 //      those points → Input::fluid_*;
 //   3. outputs() → loads at the reference point and the added-mass matrix.
 // The pose handed to outputs() must be the one given to strip_points().
-#include <array>
+#include <span>
 #include <vector>
 
 #include "fowtsim/core/channels.hpp"
@@ -26,7 +26,10 @@ using Points = Eigen::Matrix<double, 3, Eigen::Dynamic>;  // 3 × n points or ve
 struct Hydro {
   using Params = hydro::Params;
 
-  struct State {};  // Morison strip theory and hydrostatics carry no memory
+  // Morison strip theory and hydrostatics carry no memory; potential-flow radiation does.
+  struct State {
+    RadiationState radiation;  // empty without potential flow
+  };
 
   struct Input {
     // Platform motion: position_m = r_ref (reference point in g), orientation = T_gb,
@@ -38,24 +41,34 @@ struct Hydro {
     VecX dynamic_pressure_Pa;         // (node_count) wave dynamic pressure p − ρ g (−z) [Pa]
     VecX surface_elevation_m;         // (members) wave elevation at waterline_points() [m]; read
                                       // only with SurfaceModel::wave_elevation
-    double time_s = 0.0;              // simulation time [s], only for error messages
+    Vec6 wave_excitation = Vec6::Zero();  // first-order potential-flow wave load about r_ref, g [N, N·m];
+                                          // read only with potential flow and excitation (the driver
+                                          // interpolates it from the sea and the .3 table)
+    double time_s = 0.0;              // simulation time [s]: the radiation memory's stage time
   };
 
   struct Output {
     Vec6 total = Vec6::Zero();        // [F; M] about r_ref, in g [N, N·m]: buoyancy + morison + added_linear
+                                      //   + radiation + excitation
     Vec6 buoyancy = Vec6::Zero();     // ρ g V k at the centre of buoyancy [N, N·m]
     Vec6 morison = Vec6::Zero();      // strips + end effects, without the structure-acceleration part [N, N·m]
     Vec6 added_linear = Vec6::Zero(); // F0 − C q − B q̇ − B_quad |q̇| q̇ [N, N·m]
-    // Added mass about r_ref in g: the structure-acceleration part of Morison is
-    // [F; M] = −added_mass · [a_ref; α] (a_ref, α in g). Symmetric. For the solver's mass matrix;
-    // not included in any load above.
+    Vec6 radiation = Vec6::Zero();    // potential flow: −∫ K(τ) q̇(t − τ) dτ [N, N·m] (HydroDyn B1Rdt*)
+    Vec6 excitation = Vec6::Zero();   // potential flow: first-order wave excitation [N, N·m] (B1Wvs*)
+    // Added mass about r_ref in g: the structure-acceleration part of Morison (and A(∞) of
+    // potential flow) is [F; M] = −added_mass · [a_ref; α] (a_ref, α in g). For the solver's mass
+    // matrix; not included in any load above.
     Mat6 added_mass = Mat6::Zero();   // [kg, kg·m, kg·m²]
     double submerged_volume_m3 = 0.0;           // V below z = 0 [m³]
     Vec3 centre_of_buoyancy_m = Vec3::Zero();   // in g [m]; r_ref when V = 0
   };
 
-  static State make_state(const Params&) { return {}; }
-  static void advance(const Params&, const Input&, double, double, State&) {}
+  // The radiation memory at rest before input.time_s, the platform moving as input.platform then;
+  // make_state(params): at rest at t = 0.
+  static State make_state(const Params& params, const Input& input);
+  static State make_state(const Params& params);
+  // Moves the radiation memory from t to t + dt; `input.platform` is the motion at t + dt.
+  static void advance(const Params& params, const Input& input, double t, double dt, State& state);
   // Throws NumericalError on a non-finite input or result (never returns NaN).
   static Output outputs(const Params& params, const Input& input, const State& state);
   static std::vector<ChannelInfo> channels(const Params& params);
@@ -77,8 +90,10 @@ void waterline_points(const Params& params, const FrameMotion& platform, Eigen::
 // Current velocity at height z (g) for the current profile [m/s].
 Vec3 current_velocity(const CurrentParams& current, double z_m);
 
-// Values of channels() in the same order.
-inline constexpr int kChannelCount = 24;
-std::array<double, kChannelCount> channel_values(const Hydro::Output& output);
+// Values of channels(params) in the same order (24, and 12 more with potential flow).
+void channel_values(const Params& params, const Hydro::Output& output, std::span<double> values);
+
+// q̇ = [ṙ_ref; ω in g] of a platform motion: the velocity the radiation memory takes.
+Vec6 generalised_velocity(const FrameMotion& platform);
 
 }  // namespace fowtsim::hydro

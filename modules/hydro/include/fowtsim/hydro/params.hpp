@@ -4,9 +4,11 @@
 // Every member is a straight circular cylinder or frustum (taper) fixed in the platform body
 // frame b, whose origin is the platform reference point (OpenFAST: SWL on the undisplaced centre
 // line). Built once from the deck, validated by validate(); immutable afterwards.
+#include <optional>
 #include <vector>
 
 #include "fowtsim/core/types.hpp"
+#include "fowtsim/hydro/potential_flow.hpp"
 
 namespace fowtsim::hydro {
 
@@ -46,6 +48,21 @@ enum class SurfaceModel {
                    // supplied per member in Input::surface_elevation_m (hydrostatics stay at z = 0)
 };
 
+// Where the hydrostatic load comes from.
+enum class Hydrostatics {
+  nonlinear,  // buoyancy of the members' displaced volume at the instantaneous pose (exact)
+  linear,     // ρ g V0 up at the reference point − C_hst q (HydroDyn with WAMIT: PtfmVol0 and the
+              // .hst matrix; the centre of buoyancy on the body z axis at rest, as OC3's)
+};
+
+// Potential-flow hydrodynamics (issue 15; README "Potential flow"). With it the members carry
+// viscous drag only (Morison inertia, Froude–Krylov, end-plate pressure and added mass all come
+// from the potential-flow solution, as HydroDyn members with PropPot).
+struct PotentialFlowParams {
+  RadiationModel radiation;       // A(∞) and the radiation memory
+  bool excitation = true;         // add Input::wave_excitation (first-order, from the .3 file)
+};
+
 struct Params {
   double water_density_kg_m3 = 1025.0;  // ρ [kg/m³] (> 0)
   double gravity_m_s2 = 9.80665;        // g [m/s²] (> 0)
@@ -60,6 +77,10 @@ struct Params {
   Mat6 added_stiffness = Mat6::Zero();             // C [N/m, N/rad, N·m/m, N·m/rad]
   Mat6 added_damping = Mat6::Zero();               // B [N/(m/s), N·m/(rad/s), …]
   Mat6 added_quadratic_damping = Mat6::Zero();     // B_quad [N/(m/s)², N·m/(rad/s)², …]
+  Hydrostatics hydrostatics = Hydrostatics::nonlinear;
+  Mat6 hydrostatic_stiffness = Mat6::Zero();  // linear: C_hst about the reference point [N/m, N·m/rad, …]
+  double displaced_volume_m3 = 0.0;           // linear: V0 at rest [m³] (> 0)
+  std::optional<PotentialFlowParams> potential_flow;  // absent: Morison strips carry everything
   // Gauss–Legendre points in the axial integral over the part of a member the still-water plane
   // cuts obliquely (hydrostatics.hpp); 16 gives machine precision for the OC3 spar (tests).
   int hydrostatic_quadrature_points = 16;          // [2, 64]

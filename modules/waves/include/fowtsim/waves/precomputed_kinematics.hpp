@@ -25,6 +25,7 @@
 #include <span>
 #include <vector>
 
+#include "fowtsim/core/interpolation.hpp"
 #include "fowtsim/core/types.hpp"
 #include "fowtsim/waves/wave_field.hpp"
 
@@ -75,12 +76,7 @@ class PrecomputedKinematics {
     PointKind kind = PointKind::dry;
     std::size_t offset = 0;                // exact: start of [sample][quantity] block
   };
-  struct TimeStencil {
-    std::size_t index[4];
-    double weight[4];
-  };
-  TimeStencil time_stencil(double t_s) const;
-  double interpolate_elevation(const Column& column, const TimeStencil& ts) const;
+  double interpolate_elevation(const Column& column, const PeriodicStencil& ts) const;
 
   std::vector<Point> points_;
   std::vector<Column> columns_;

@@ -1,0 +1,168 @@
+#include "fowtsim/hydro/potential_flow.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "fowtsim/core/error.hpp"
+#include "fowtsim/hydro/radiation_kernel.hpp"
+
+namespace fowtsim::hydro {
+namespace {
+
+// Largest |B_ij(ω)| over the table.
+Mat6 peak_damping(const RadiationTable& table) {
+  Mat6 peak = Mat6::Zero();
+  for (const Mat6& b : table.damping) peak = peak.cwiseMax(b.cwiseAbs());
+  return peak;
+}
+
+// Entries worth a kernel: off the diagonal above 1e-6 of the geometric mean of their diagonals,
+// on it above 1e-6 of the largest diagonal of the same kind (translations 0–2, rotations 3–5 share
+// units). Below that a WAMIT table holds round-off (e.g. the yaw of an axisymmetric spar).
+bool significant(const Mat6& peak, int i, int j) {
+  if (i != j) return peak(i, j) > 1e-6 * std::sqrt(peak(i, i) * peak(j, j));
+  const int first = i < 3 ? 0 : 3;
+  return peak(i, i) > 0.0 && peak(i, i) > 1e-6 * peak.diagonal().segment<3>(first).maxCoeff();
+}
+
+// φ₁(z) = (e^z − 1)/z and φ₂(z) = (e^z − 1 − z)/z², by their series where the closed forms
+// cancel (|z| < 0.05: truncation below 1e-12 of the value, round-off of the closed form below 1e-13).
+void phi_functions(std::complex<double> z, std::complex<double>& phi1, std::complex<double>& phi2) {
+  if (std::abs(z) < 0.05) {
+    phi1 = 1.0 + z * (1.0 / 2.0 + z * (1.0 / 6.0 + z * (1.0 / 24.0 + z * (1.0 / 120.0 + z / 720.0))));
+    phi2 = 0.5 + z * (1.0 / 6.0 + z * (1.0 / 24.0 + z * (1.0 / 120.0 + z * (1.0 / 720.0 + z / 5040.0))));
+    return;
+  }
+  const std::complex<double> e = std::exp(z);
+  phi1 = (e - 1.0) / z;
+  phi2 = (e - 1.0 - z) / (z * z);
+}
+
+// ξ(t_n + h) for velocity v0 at t_n and v1 at t_n + h, linear in between.
+std::complex<double> modal_update(std::complex<double> pole, std::complex<double> xi, double h, double v0, double v1) {
+  if (h == 0.0) return xi;
+  std::complex<double> phi1, phi2;
+  phi_functions(pole * h, phi1, phi2);
+  return std::exp(pole * h) * xi + h * ((phi1 - phi2) * v0 + phi2 * v1);
+}
+
+}  // namespace
+
+RadiationModel make_radiation_model(const RadiationTable& table, const RadiationOptions& options) {
+  if (!(options.step_s > 0.0) || !(options.window_s > options.step_s) || !(options.fit_tolerance > 0.0) ||
+      options.fit_max_order < 2)
+    throw InputError({"hydro.potential_flow", std::nullopt, "radiation options",
+                      "step > 0, window > step, fit tolerance > 0, max order ≥ 2"},
+                     fmt::format("radiation step {} s, window {} s, tolerance {}, max order {}", options.step_s,
+                                 options.window_s, options.fit_tolerance, options.fit_max_order));
+  RadiationModel model;
+  model.method = options.method;
+  model.step_s = options.step_s;
+  model.window_steps = static_cast<int>(std::ceil(options.window_s / options.step_s - 1e-9));
+  model.added_mass_infinite_frequency = table.added_mass_infinite_frequency;
+  // Kernel at ΔT/2 over the window and the two half steps a stage can add.
+  const double half = 0.5 * options.step_s;
+  std::vector<double> times(static_cast<std::size_t>(2 * model.window_steps + 3));
+  for (std::size_t k = 0; k < times.size(); ++k) times[k] = half * static_cast<double>(k);
+  const std::vector<Mat6> kernel = retardation_kernel(table.frequencies_rad_s, table.damping, times);
+  const Mat6 peak = peak_damping(table);
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) {
+      if (!significant(peak, i, j)) continue;
+      RadiationEntry e;
+      e.row = i;
+      e.col = j;
+      e.kernel.resize(times.size());
+      for (std::size_t k = 0; k < times.size(); ++k) e.kernel[k] = kernel[k](i, j);
+      if (model.method == RadiationMethod::state_space) {
+        // Fitted on the window, thinned to at most 400 samples: the Hankel matrices stay 200 × 200
+        // (an SVD of well under a second) and the kernel's shortest feature, ~1 s for a spar, keeps
+        // ≥ 6 samples per second for any window up to 60 s.
+        const std::size_t window = static_cast<std::size_t>(2 * model.window_steps + 1);
+        const std::size_t stride = (window + 399) / 400;
+        std::vector<double> samples;
+        for (std::size_t k = 0; k < window; k += stride) samples.push_back(e.kernel[k]);
+        e.fit = fit_exponentials(samples, half * static_cast<double>(stride), options.fit_tolerance, options.fit_max_order);
+        e.first_term = model.term_count;
+        model.term_count += static_cast<int>(e.fit.terms.size());
+        e.kernel.clear();
+      }
+      model.entries.push_back(std::move(e));
+    }
+  return model;
+}
+
+RadiationState make_radiation_state(const RadiationModel& model, double t0_s, const Vec6& velocity) {
+  RadiationState s;
+  s.time_s = t0_s;
+  s.velocity = velocity;
+  if (model.method == RadiationMethod::convolution) {
+    s.history.assign(static_cast<std::size_t>(model.window_steps + 1), Vec6::Zero());
+    s.history[0] = velocity;
+  } else {
+    s.modal.assign(static_cast<std::size_t>(model.term_count), 0.0);
+  }
+  return s;
+}
+
+Vec6 radiation_load(const RadiationModel& model, const RadiationState& state, double t_s, const Vec6& velocity) {
+  const double h = t_s - state.time_s;
+  const double dt = model.step_s;
+  if (!(h >= -1e-9 * dt && h <= dt * (1.0 + 1e-9)))
+    throw std::logic_error(fmt::format("radiation_load at t = {} s outside the step from t_n = {} s", t_s, state.time_s));
+  Vec6 force = Vec6::Zero();
+  if (model.method == RadiationMethod::state_space) {
+    for (const RadiationEntry& e : model.entries) {
+      double sum = 0.0;
+      for (std::size_t m = 0; m < e.fit.terms.size(); ++m) {
+        const ExponentialTerm& term = e.fit.terms[m];
+        const std::complex<double> xi = modal_update(term.pole, state.modal[static_cast<std::size_t>(e.first_term) + m],
+                                                     std::max(h, 0.0), state.velocity[e.col], velocity[e.col]);
+        sum += term.weight * (term.residue * xi).real();
+      }
+      force[e.row] -= sum;
+    }
+    return force;
+  }
+  // Trapezoidal rule: the newest interval [t_n, t] (width h), then the history intervals of ΔT.
+  // Kernel sample index of τ = h + kΔT is (position + 2k), interpolated linearly off the half-step grid.
+  const double position = std::clamp(h / (0.5 * dt), 0.0, 2.0);
+  const int base = std::min(static_cast<int>(std::floor(position)), 1);
+  const double frac = position - base;
+  const int n = model.window_steps;
+  const auto size = static_cast<int>(state.history.size());
+  for (const RadiationEntry& e : model.entries) {
+    const double* k = e.kernel.data();
+    const auto at = [&](int index) { return (1.0 - frac) * k[base + index] + frac * k[base + index + 1]; };
+    double sum = 0.5 * std::max(h, 0.0) * (k[0] * velocity[e.col] + at(0) * state.velocity[e.col]);
+    for (int s = 0; s <= n; ++s) {
+      const double weight = (s == 0 || s == n) ? 0.5 * dt : dt;
+      sum += weight * at(2 * s) * state.history[static_cast<std::size_t>((state.newest - s + size) % size)][e.col];
+    }
+    force[e.row] -= sum;
+  }
+  return force;
+}
+
+void advance_radiation(const RadiationModel& model, double t_end_s, const Vec6& velocity, RadiationState& state) {
+  const double dt = t_end_s - state.time_s;
+  if (std::abs(dt - model.step_s) > 1e-9 * model.step_s)
+    throw std::logic_error(fmt::format("advance_radiation over {} s, the model's step is {} s", dt, model.step_s));
+  if (model.method == RadiationMethod::state_space) {
+    for (const RadiationEntry& e : model.entries)
+      for (std::size_t m = 0; m < e.fit.terms.size(); ++m) {
+        std::complex<double>& xi = state.modal[static_cast<std::size_t>(e.first_term) + m];
+        xi = modal_update(e.fit.terms[m].pole, xi, model.step_s, state.velocity[e.col], velocity[e.col]);
+      }
+  } else {
+    state.newest = (state.newest + 1) % static_cast<int>(state.history.size());
+    state.history[static_cast<std::size_t>(state.newest)] = velocity;
+  }
+  state.velocity = velocity;
+  state.time_s = t_end_s;
+}
+
+}  // namespace fowtsim::hydro
