@@ -52,7 +52,7 @@ Schema potential_flow_schema() {
                              "fitted state-space form (RdtnMod 2, Kung's realisation)")},
       {"radiation_window_s", Schema::number().greater_than(0.0).default_value(60.0)
                                  .doc("memory kept by the convolution, and the span the state space is fitted on (RdtnTMax)")},
-      {"state_space_tolerance", Schema::number().greater_than(0.0).at_most(0.5).default_value(0.02)
+      {"state_space_tolerance", Schema::number().greater_than(0.0).at_most(0.5).default_value(0.002)
                                     .doc("state_space: relative RMS error allowed per kernel entry")},
       {"state_space_max_order", Schema::integer().at_least(2).at_most(40).default_value(20)
                                     .doc("state_space: largest order per kernel entry")},

@@ -85,7 +85,7 @@ ExponentialFit fit_exponentials(std::span<const double> samples, double dt_s, do
   const Eigen::BDCSVD<Eigen::MatrixXd> svd(h0, Eigen::ComputeThinU | Eigen::ComputeThinV);
   ExponentialFit best;
   best.relative_error = 2.0;
-  for (int order = 2; order <= max_order && order <= static_cast<int>(std::min(rows, cols)); order += 2) {
+  for (int order = 1; order <= max_order && order <= static_cast<int>(std::min(rows, cols)); ++order) {
     if (svd.singularValues()[order - 1] <= 1e-14 * svd.singularValues()[0]) break;  // no more information
     ExponentialFit fit;
     fit.order = order;

@@ -26,7 +26,7 @@ struct ExponentialFit {
   double relative_error = 0.0;    // ‖K_fit − K‖₂ / ‖K‖₂ over the samples
 };
 
-// Samples K(k Δt), k = 0 … n − 1 (n ≥ 8). Tries orders 2, 4, … up to max_order and returns the
+// Samples K(k Δt), k = 0 … n − 1 (n ≥ 8). Tries orders 1, 2, … up to max_order and returns the
 // first whose relative error is below `tolerance`, else the best one found. All-zero samples give
 // an empty fit with error 0.
 ExponentialFit fit_exponentials(std::span<const double> samples, double dt_s, double tolerance, int max_order);

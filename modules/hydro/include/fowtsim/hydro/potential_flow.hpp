@@ -40,7 +40,7 @@ struct RadiationOptions {
   RadiationMethod method = RadiationMethod::convolution;
   double window_s = 60.0;      // T: memory kept (HydroDyn RdtnTMax) [s] (> 0)
   double step_s = 0.0;         // ΔT: the platform's step, the only step advance() takes [s] (> 0)
-  double fit_tolerance = 0.02; // state_space: relative error allowed per kernel entry [-]
+  double fit_tolerance = 0.002; // state_space: relative error allowed per kernel entry [-]
   int fit_max_order = 20;      // state_space: largest realisation order per entry [-]
 };
 
