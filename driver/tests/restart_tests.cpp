@@ -69,3 +69,18 @@ TEST_CASE("a checkpoint of another deck or step is refused before the run", "[un
   bad_every.checkpoint_every_s = 0.0123;
   CHECK_THROWS_AS(run_scene(bad_every, nullptr), InputError);
 }
+
+TEST_CASE("a restart continues a turbine on WAMIT potential flow in waves bit-identically (convolution and state space)",
+          "[verification][run]") {
+  // The radiation memory (history ring or modal states, and the stage sums) is part of the state.
+  (void)testing::shared_dir_or_skip();  // the WAMIT files live beside the reference data
+  const std::string sea =
+      "waves: {model: jonswap, hs_m: 4.0, tp_s: 9.0, seed: 3, duration_s: 200.0, dt_s: 0.25, depth_m: 320.0}\n";
+  for (const char* method : {"convolution", "state_space"}) {
+    const auto dir = testing::scratch_dir(std::string("restart_wamit_deck_") + method);
+    std::ofstream(dir / "deck.yaml") << "include: [" << (testing::source_dir() / "inputs/oc3_hywind/turbine_steady_15mps.yaml").string()
+                                     << ", " << (testing::source_dir() / "inputs/oc3_hywind/hydro_potential_flow.yaml").string()
+                                     << "]\nhydro: {potential_flow: {radiation: " << method << "}}\n";
+    check_restart(dir / "deck.yaml", sea, std::string("wamit_") + method);
+  }
+}

@@ -49,6 +49,48 @@ std::complex<double> modal_update(std::complex<double> pole, std::complex<double
   return std::exp(pole * h) * xi + h * ((phi1 - phi2) * v0 + phi2 * v1);
 }
 
+// Σ_s w_s K(h + sΔT) q̇(t_n − sΔT) over the stored history (trapezoid weights ΔT/2 at both ends),
+// h = (base + frac) ΔT/2: the memory integral but for its newest interval [t_n, t_n + h].
+Vec6 history_part(const RadiationModel& model, const RadiationState& state, int base, double frac) {
+  Vec6 force = Vec6::Zero();
+  const double dt = model.step_s;
+  const int n = model.window_steps;
+  const auto size = static_cast<int>(state.history.size());
+  for (const RadiationEntry& e : model.entries) {
+    const double* k = e.kernel.data() + base;
+    double sum = 0.0;
+    for (int s = 0; s <= n; ++s) {
+      const double weight = (s == 0 || s == n) ? 0.5 * dt : dt;
+      const double kernel = frac == 0.0 ? k[2 * s] : (1.0 - frac) * k[2 * s] + frac * k[2 * s + 1];
+      sum += weight * kernel * state.history[static_cast<std::size_t>((state.newest - s + size) % size)][e.col];
+    }
+    force[e.row] -= sum;
+  }
+  return force;
+}
+
+// The three on-grid history parts in one pass over the history, oldest-to-newest order kept
+// contiguous (no modulo per sample): sample s meets kernel samples 2s, 2s + 1, 2s + 2.
+void update_history_loads(const RadiationModel& model, RadiationState& state) {
+  const double dt = model.step_s;
+  const int n = model.window_steps;
+  const auto size = static_cast<int>(state.history.size());
+  for (Vec6& load : state.history_load) load.setZero();
+  for (const RadiationEntry& e : model.entries) {
+    double sum[3] = {0.0, 0.0, 0.0};
+    const double* k = e.kernel.data();
+    int index = state.newest;
+    for (int s = 0; s <= n; ++s) {
+      const double x = (s == 0 || s == n ? 0.5 * dt : dt) * state.history[static_cast<std::size_t>(index)][e.col];
+      sum[0] += k[2 * s] * x;
+      sum[1] += k[2 * s + 1] * x;
+      sum[2] += k[2 * s + 2] * x;
+      index = index == 0 ? size - 1 : index - 1;
+    }
+    for (int stage = 0; stage < 3; ++stage) state.history_load[static_cast<std::size_t>(stage)][e.row] -= sum[stage];
+  }
+}
+
 }  // namespace
 
 RadiationModel make_radiation_model(const RadiationTable& table, const RadiationOptions& options) {
@@ -102,6 +144,7 @@ RadiationState make_radiation_state(const RadiationModel& model, double t0_s, co
   if (model.method == RadiationMethod::convolution) {
     s.history.assign(static_cast<std::size_t>(model.window_steps + 1), Vec6::Zero());
     s.history[0] = velocity;
+    update_history_loads(model, s);
   } else {
     s.modal.assign(static_cast<std::size_t>(model.term_count), 0.0);
   }
@@ -127,22 +170,19 @@ Vec6 radiation_load(const RadiationModel& model, const RadiationState& state, do
     }
     return force;
   }
-  // Trapezoidal rule: the newest interval [t_n, t] (width h), then the history intervals of ΔT.
-  // Kernel sample index of τ = h + kΔT is (position + 2k), interpolated linearly off the half-step grid.
+  // Trapezoidal rule: the newest interval [t_n, t] (width h) with the stage velocity, then the
+  // history intervals of ΔT. Kernel sample index of τ = h + kΔT is (position + 2k), interpolated
+  // linearly off the half-step grid; on it (every RK4 stage) the history part is the stored one.
   const double position = std::clamp(h / (0.5 * dt), 0.0, 2.0);
   const int base = std::min(static_cast<int>(std::floor(position)), 1);
   const double frac = position - base;
-  const int n = model.window_steps;
-  const auto size = static_cast<int>(state.history.size());
+  const double on_grid = std::round(position);
+  force = std::abs(position - on_grid) < 1e-9 ? state.history_load[static_cast<std::size_t>(on_grid)]
+                                              : history_part(model, state, base, frac);
   for (const RadiationEntry& e : model.entries) {
     const double* k = e.kernel.data();
-    const auto at = [&](int index) { return (1.0 - frac) * k[base + index] + frac * k[base + index + 1]; };
-    double sum = 0.5 * std::max(h, 0.0) * (k[0] * velocity[e.col] + at(0) * state.velocity[e.col]);
-    for (int s = 0; s <= n; ++s) {
-      const double weight = (s == 0 || s == n) ? 0.5 * dt : dt;
-      sum += weight * at(2 * s) * state.history[static_cast<std::size_t>((state.newest - s + size) % size)][e.col];
-    }
-    force[e.row] -= sum;
+    const double k_h = (1.0 - frac) * k[base] + frac * k[base + 1];
+    force[e.row] -= 0.5 * std::max(h, 0.0) * (k[0] * velocity[e.col] + k_h * state.velocity[e.col]);
   }
   return force;
 }
@@ -163,6 +203,7 @@ void advance_radiation(const RadiationModel& model, double t_end_s, const Vec6& 
   }
   state.velocity = velocity;
   state.time_s = t_end_s;
+  if (model.method == RadiationMethod::convolution) update_history_loads(model, state);
 }
 
 }  // namespace fowtsim::hydro

@@ -17,6 +17,7 @@
 // Both are explicit in the memory and implicit in nothing: the force at a stage is a function of the
 // stored state and the stage velocity, so the platform's step stays the only step. The memory
 // starts from rest (q̇ = 0 before t = 0).
+#include <array>
 #include <complex>
 #include <span>
 #include <vector>
@@ -68,6 +69,9 @@ struct RadiationState {
   std::vector<Vec6> history;                  // convolution: q̇(t_n − k ΔT) at index (newest − k) mod (N + 1)
   int newest = 0;
   std::vector<std::complex<double>> modal;    // state_space: ξ_m(t_n)
+  // convolution: the history part of the integral (all but the newest interval) at the stage
+  // times t_n, t_n + ΔT/2, t_n + ΔT, summed once per step instead of at every stage.
+  std::array<Vec6, 3> history_load{Vec6::Zero(), Vec6::Zero(), Vec6::Zero()};
   template <class Archive>
   void checkpoint(Archive& a) {
     a.io(time_s);
@@ -75,6 +79,7 @@ struct RadiationState {
     a.io(history);
     a.io(newest);
     a.io(modal);
+    a.io(history_load);
   }
 };
 
