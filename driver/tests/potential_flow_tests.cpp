@@ -3,16 +3,20 @@
 // driver, checked against the frequency-domain tables themselves.
 #include <cmath>
 #include <complex>
+#include <fstream>
 #include <numbers>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
+#include "fowtsim/core/error.hpp"
 #include "fowtsim/hydro/potential_flow.hpp"
 #include "fowtsim/hydro/radiation_kernel.hpp"
 #include "fowtsim/io/wamit_input.hpp"
 #include "fowtsim/testing/skip.hpp"
 #include "fowtsim/waves/wave_field.hpp"
+#include "run/run_scene.hpp"
+#include "run_request.hpp"
 #include "scenes/wave_excitation.hpp"
 
 using namespace fowtsim;
@@ -167,4 +171,24 @@ TEST_CASE("the OC3 wave excitation of a regular wave is the .3 transfer function
   // at long waves (hydrostatic pressure): WAMIT's e^{iωt} convention is the wave field's.
   CHECK(std::arg(driver::excitation_transfer(table, 0, 0.1, 0.0)) == Approx(std::numbers::pi / 2).margin(0.01));
   CHECK(std::abs(std::arg(driver::excitation_transfer(table, 2, 0.1, 0.0))) < 0.01);
+}
+
+TEST_CASE("bad potential-flow input stops before anything is written, naming the deck line", "[unit][hydro]") {
+  const auto dir = testing::scratch_dir("potential_flow_bad_input");
+  const auto deck = testing::source_dir() / "inputs/oc3_hywind/free_decay_pitch.yaml";
+  const auto expect_error = [&](const std::string& name, const std::string& overrides, const std::string& needle) {
+    std::ofstream(dir / (name + ".yaml")) << "include: [" << deck.string() << "]\n" << overrides;
+    const auto base = dir / name;
+    try {
+      driver::run_scene(driver::run_request(dir / (name + ".yaml"), base), nullptr);
+      FAIL("no error for " << name);
+    } catch (const InputError& e) {
+      INFO(e.what());
+      CHECK(std::string(e.what()).find(needle) != std::string::npos);
+      CHECK(std::string(e.what()).find(name + ".yaml:") != std::string::npos);  // file:line of the key
+    }
+    CHECK_FALSE(std::filesystem::exists(base.string() + ".out"));
+  };
+  expect_error("missing_wamit", "hydro: {potential_flow: {wamit_root: no/such/Spar}}\n", "Spar.1");
+  expect_error("linear_without_wamit", "hydro: {hydrostatics: linear, displaced_volume_m3: 8029.21}\n", "potential_flow");
 }

@@ -134,7 +134,7 @@ Schema floating_scene_schema() {
       {"output", output_schema().optional().doc("what to write")},
       {"structure", structure_schema().doc("rigid multibody: platform, tower, nacelle, rotor, drivetrain")},
       {"waves", waves_schema().optional().doc("incident sea; absent = still water")},
-      {"hydro", hydro_schema().optional().doc("Morison strips, hydrostatics, linear extras; absent = none")},
+      {"hydro", hydro_schema().optional().doc("Morison strips, hydrostatics, linear extras, WAMIT potential flow; absent = none")},
       {"mooring", mooring_schema().optional().doc("mooring lines; absent = none")},
       {"aero", aero_schema().optional().doc("rotor aerodynamics (with `airfoils` and `wind`); absent = none")},
       {"airfoils", airfoils_schema().optional().doc("airfoil polars the aero blade rows name")},

@@ -101,7 +101,7 @@ Schema platform_scene_schema() {
       {"report_mooring_stiffness", Schema::boolean().default_value(false)
                                        .doc("write the linearised 6×6 mooring stiffness at the mean pose to the summary and metadata")},
       {"waves", waves_schema().optional().doc("incident sea; absent = still water")},
-      {"hydro", hydro_schema().optional().doc("Morison strips, hydrostatics, linear extras; absent = none")},
+      {"hydro", hydro_schema().optional().doc("Morison strips, hydrostatics, linear extras, WAMIT potential flow; absent = none")},
       {"mooring", mooring_schema().optional().doc("mooring lines; absent = none")},
   });
 }
