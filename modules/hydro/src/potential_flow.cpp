@@ -50,45 +50,45 @@ std::complex<double> modal_update(std::complex<double> pole, std::complex<double
 }
 
 // Σ_s w_s K(h + sΔT) q̇(t_n − sΔT) over the stored history (trapezoid weights ΔT/2 at both ends),
-// h = (base + frac) ΔT/2: the memory integral but for its newest interval [t_n, t_n + h].
-Vec6 history_part(const RadiationModel& model, const RadiationState& state, int base, double frac) {
-  Vec6 force = Vec6::Zero();
+// for h = (base + frac) ΔT/2 with frac = 0 and each base in `bases`, or one off-grid h: the memory
+// integral but for its newest interval [t_n, t_n + h]. One pass over the history, newest first
+// (no modulo per sample), serving every entry and every requested h.
+template <int kStages>
+void history_sums(const RadiationModel& model, const RadiationState& state, const int (&bases)[kStages], double frac,
+                  Vec6 (&out)[kStages]) {
+  const auto entries = static_cast<int>(model.entries.size());
+  constexpr int kMaxEntries = 36;
+  double sum[kStages][kMaxEntries] = {};
+  int col[kMaxEntries];
+  for (int e = 0; e < entries; ++e) col[e] = model.entries[static_cast<std::size_t>(e)].col;
   const double dt = model.step_s;
   const int n = model.window_steps;
   const auto size = static_cast<int>(state.history.size());
-  for (const RadiationEntry& e : model.entries) {
-    const double* k = e.kernel.data() + base;
-    double sum = 0.0;
-    for (int s = 0; s <= n; ++s) {
-      const double weight = (s == 0 || s == n) ? 0.5 * dt : dt;
-      const double kernel = frac == 0.0 ? k[2 * s] : (1.0 - frac) * k[2 * s] + frac * k[2 * s + 1];
-      sum += weight * kernel * state.history[static_cast<std::size_t>((state.newest - s + size) % size)][e.col];
+  int index = state.newest;
+  for (int s = 0; s <= n; ++s) {
+    const Vec6 x = ((s == 0 || s == n) ? 0.5 * dt : dt) * state.history[static_cast<std::size_t>(index)];
+    for (int stage = 0; stage < kStages; ++stage) {
+      const double* k = model.kernel.data() + static_cast<std::size_t>((2 * s + bases[stage]) * entries);
+      if (frac == 0.0) {
+        for (int e = 0; e < entries; ++e) sum[stage][e] += k[e] * x[col[e]];
+      } else {
+        for (int e = 0; e < entries; ++e) sum[stage][e] += ((1.0 - frac) * k[e] + frac * k[e + entries]) * x[col[e]];
+      }
     }
-    force[e.row] -= sum;
+    index = index == 0 ? size - 1 : index - 1;
   }
-  return force;
+  for (int stage = 0; stage < kStages; ++stage) {
+    out[stage].setZero();
+    for (int e = 0; e < entries; ++e) out[stage][model.entries[static_cast<std::size_t>(e)].row] -= sum[stage][e];
+  }
 }
 
-// The three on-grid history parts in one pass over the history, oldest-to-newest order kept
-// contiguous (no modulo per sample): sample s meets kernel samples 2s, 2s + 1, 2s + 2.
+// The three on-grid history parts (h = 0, ΔT/2, ΔT), once per step.
 void update_history_loads(const RadiationModel& model, RadiationState& state) {
-  const double dt = model.step_s;
-  const int n = model.window_steps;
-  const auto size = static_cast<int>(state.history.size());
-  for (Vec6& load : state.history_load) load.setZero();
-  for (const RadiationEntry& e : model.entries) {
-    double sum[3] = {0.0, 0.0, 0.0};
-    const double* k = e.kernel.data();
-    int index = state.newest;
-    for (int s = 0; s <= n; ++s) {
-      const double x = (s == 0 || s == n ? 0.5 * dt : dt) * state.history[static_cast<std::size_t>(index)][e.col];
-      sum[0] += k[2 * s] * x;
-      sum[1] += k[2 * s + 1] * x;
-      sum[2] += k[2 * s + 2] * x;
-      index = index == 0 ? size - 1 : index - 1;
-    }
-    for (int stage = 0; stage < 3; ++stage) state.history_load[static_cast<std::size_t>(stage)][e.row] -= sum[stage];
-  }
+  constexpr int bases[3] = {0, 1, 2};
+  Vec6 out[3];
+  history_sums(model, state, bases, 0.0, out);
+  for (int stage = 0; stage < 3; ++stage) state.history_load[static_cast<std::size_t>(stage)] = out[stage];
 }
 
 }  // namespace
@@ -117,23 +117,29 @@ RadiationModel make_radiation_model(const RadiationTable& table, const Radiation
       RadiationEntry e;
       e.row = i;
       e.col = j;
-      e.kernel.resize(times.size());
-      for (std::size_t k = 0; k < times.size(); ++k) e.kernel[k] = kernel[k](i, j);
       if (model.method == RadiationMethod::state_space) {
+        std::vector<double> samples_ij(times.size());
+        for (std::size_t k = 0; k < times.size(); ++k) samples_ij[k] = kernel[k](i, j);
         // Fitted on the window, thinned to at most 400 samples: the Hankel matrices stay 200 × 200
         // (an SVD of well under a second) and the kernel's shortest feature, ~1 s for a spar, keeps
         // ≥ 6 samples per second for any window up to 60 s.
         const std::size_t window = static_cast<std::size_t>(2 * model.window_steps + 1);
         const std::size_t stride = (window + 399) / 400;
         std::vector<double> samples;
-        for (std::size_t k = 0; k < window; k += stride) samples.push_back(e.kernel[k]);
+        for (std::size_t k = 0; k < window; k += stride) samples.push_back(samples_ij[k]);
         e.fit = fit_exponentials(samples, half * static_cast<double>(stride), options.fit_tolerance, options.fit_max_order);
         e.first_term = model.term_count;
         model.term_count += static_cast<int>(e.fit.terms.size());
-        e.kernel.clear();
       }
       model.entries.push_back(std::move(e));
     }
+  if (model.method == RadiationMethod::convolution) {
+    const std::size_t entries = model.entries.size();
+    model.kernel.resize(times.size() * entries);
+    for (std::size_t k = 0; k < times.size(); ++k)
+      for (std::size_t e = 0; e < entries; ++e)
+        model.kernel[k * entries + e] = kernel[k](model.entries[e].row, model.entries[e].col);
+  }
   return model;
 }
 
@@ -177,12 +183,21 @@ Vec6 radiation_load(const RadiationModel& model, const RadiationState& state, do
   const int base = std::min(static_cast<int>(std::floor(position)), 1);
   const double frac = position - base;
   const double on_grid = std::round(position);
-  force = std::abs(position - on_grid) < 1e-9 ? state.history_load[static_cast<std::size_t>(on_grid)]
-                                              : history_part(model, state, base, frac);
-  for (const RadiationEntry& e : model.entries) {
-    const double* k = e.kernel.data();
-    const double k_h = (1.0 - frac) * k[base] + frac * k[base + 1];
-    force[e.row] -= 0.5 * std::max(h, 0.0) * (k[0] * velocity[e.col] + k_h * state.velocity[e.col]);
+  if (std::abs(position - on_grid) < 1e-9) {
+    force = state.history_load[static_cast<std::size_t>(on_grid)];
+  } else {
+    const int bases[1] = {base};
+    Vec6 off_grid[1];
+    history_sums(model, state, bases, frac, off_grid);
+    force = off_grid[0];
+  }
+  const std::size_t entries = model.entries.size();
+  for (std::size_t e = 0; e < entries; ++e) {
+    const RadiationEntry& entry = model.entries[e];
+    const double k_0 = model.kernel[e];
+    const double k_h = (1.0 - frac) * model.kernel[static_cast<std::size_t>(base) * entries + e] +
+                       frac * model.kernel[static_cast<std::size_t>(base + 1) * entries + e];
+    force[entry.row] -= 0.5 * std::max(h, 0.0) * (k_0 * velocity[entry.col] + k_h * state.velocity[entry.col]);
   }
   return force;
 }

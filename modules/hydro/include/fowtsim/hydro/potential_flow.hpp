@@ -48,7 +48,6 @@ struct RadiationOptions {
 // One kernel entry K_ij that is not negligible (README "Potential flow": which are kept).
 struct RadiationEntry {
   int row = 0, col = 0;         // i (load), j (velocity)
-  std::vector<double> kernel;   // convolution: K_ij(k ΔT/2), k = 0 … 2N + 2
   ExponentialFit fit;           // state_space
   int first_term = 0;           // state_space: its first state in RadiationState::modal
 };
@@ -59,6 +58,9 @@ struct RadiationModel {
   int window_steps = 0;         // N = ⌈T/ΔT⌉
   Mat6 added_mass_infinite_frequency = Mat6::Zero();
   std::vector<RadiationEntry> entries;
+  // convolution: K_e(k ΔT/2) of entry e at kernel[k · entries.size() + e], k = 0 … 2N + 2 (all
+  // entries of one time side by side: one pass over the history serves them all)
+  std::vector<double> kernel;
   int term_count = 0;           // state_space: complex states
 };
 
