@@ -247,6 +247,7 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
     }
     if (!blades) {
       multibody::Multibody::advance(model, stage_loads, t, dt, state);
+      if (rotor) rotor->advance_states(model, state, t + dt, stage_loads.pitch_rad());  // UA/DBEMT, if on
       max_rotor_speed = std::max(max_rotor_speed, std::abs(state.rotor_speed_rad_s));
       return;
     }
