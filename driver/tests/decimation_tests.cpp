@@ -52,6 +52,13 @@ TEST_CASE("output decimation does not change a flexible-blade turbine's results"
                              "wind: {model: steady, speed_m_s: 12.0, reference_height_m: 90.0}\n");
 }
 
+TEST_CASE("output decimation does not change a turbine with unsteady airfoils and dynamic inflow", "[verification][run]") {
+  // The rows evaluate the rotor with the unsteady states of the last step and must leave them,
+  // and the BEM warm starts, as they were.
+  check_same_at_common_times(testing::source_dir() / "inputs/oc3_hywind/turbine_ntm_12mps_irregular_unsteady_aero.yaml",
+                             "wind: {model: steady, speed_m_s: 12.0, reference_height_m: 90.0}\n");
+}
+
 TEST_CASE("output decimation does not change the platform-loads scene's results", "[verification][run]") {
   // The catenary mooring is warm-started from the previous evaluation, made at every step.
   check_same_at_common_times(testing::source_dir() / "inputs/oc3_hywind/platform_in_waves.yaml", "");

@@ -53,6 +53,16 @@ TEST_CASE("a restart continues the flexible-blade turbine bit-identically", "[ve
   check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml", "", "flexible");
 }
 
+TEST_CASE("a restart continues the turbine with unsteady airfoils and dynamic inflow bit-identically", "[verification][run]") {
+  // Rigid blades (states advanced once per large step) and flexible blades (at the small step).
+  const std::string on = "aero: {unsteady_airfoil: hgm, dynamic_inflow: oye}\n";
+  check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_steady_15mps.yaml",
+                on + "waves: {model: jonswap, hs_m: 4.0, tp_s: 9.0, seed: 3, duration_s: 200.0, dt_s: 0.25, depth_m: 320.0}\n",
+                "rigid_unsteady_aero");
+  check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml", on,
+                "flexible_unsteady_aero");
+}
+
 TEST_CASE("a checkpoint of another deck or step is refused before the run", "[unit][run]") {
   const auto dir = testing::scratch_dir("restart_refused");
   const auto deck = testing::source_dir() / "inputs/oc3_hywind/free_decay_pitch.yaml";

@@ -54,6 +54,18 @@ Schema aero_schema() {
       {"skew_model", Schema::choice({"pitt_peters", "none"}).default_value("pitt_peters").doc("skewed-wake redistribution")},
       {"skew_factor", Schema::number().at_least(0.0).default_value(15.0 * std::numbers::pi / 32.0).doc("redistribution factor K")},
       {"pitching_moment", Schema::boolean().default_value(true).doc("apply Cm")},
+      {"unsteady_airfoil", Schema::choice({"none", "hgm"}).default_value("none")
+                               .doc("unsteady airfoil aerodynamics: none = static polar; hgm = Hansen-Gaunaa-Madsen "
+                                    "4-state dynamic stall (AeroDyn UA_Mod 4), alpha0/slope/f from the polars")},
+      {"ua_pressure_time_constant", Schema::number().greater_than(0.0).default_value(1.5)
+                                        .doc("hgm: pressure-lag time constant tau_p in c/(2W) (HGM 1.5; AeroDyn T_p0 1.7)")},
+      {"ua_separation_time_constant", Schema::number().greater_than(0.0).default_value(6.0)
+                                          .doc("hgm: separation time constant tau_f in c/(2W) (HGM 6.0; AeroDyn T_f0 3)")},
+      {"ua_cutout_deg", Schema::number().at_least(5.0).at_most(90.0).default_value(45.0)
+                            .doc("hgm: static polar beyond |alpha| (blended over the 5 deg below; AeroDyn UACutout)")},
+      {"dynamic_inflow", Schema::choice({"none", "oye"}).default_value("none")
+                             .doc("dynamic inflow: none = quasi-steady BEM induction; oye = Oye two-filter DBEMT "
+                                  "(AeroDyn DBEMT_Mod 2, tau1 = 1.1/(1-1.3 min(a,0.5)) R/U, k = 0.6)")},
       {"tower_potential", Schema::choice({"none", "baseline", "bak"}).default_value("none").doc("tower potential flow")},
       {"tower_shadow", Schema::choice({"none", "powles", "eames"}).default_value("none").doc("tower wake deficit")},
       {"output_nodes", Schema::sequence(Schema::integer().at_least(1)).max_items(9).optional().doc("1-based nodes of B·N· channels")},
@@ -94,6 +106,11 @@ aero::Params aero_params(const io::ValidatedDeck& deck) {
   p.skew_model = a.string("skew_model") == "pitt_peters" ? aero::SkewModel::pitt_peters : aero::SkewModel::none;
   p.skew_factor = a.number("skew_factor");
   p.pitching_moment = a.boolean("pitching_moment");
+  p.unsteady_airfoil = a.string("unsteady_airfoil") == "hgm" ? aero::UnsteadyAirfoilModel::hgm : aero::UnsteadyAirfoilModel::none;
+  p.ua_pressure_time_constant = a.number("ua_pressure_time_constant");
+  p.ua_separation_time_constant = a.number("ua_separation_time_constant");
+  p.ua_cutout_rad = kDegree * a.number("ua_cutout_deg");
+  p.dynamic_inflow = a.string("dynamic_inflow") == "oye" ? aero::DynamicInflowModel::oye : aero::DynamicInflowModel::none;
   const std::string potential = a.string("tower_potential"), shadow = a.string("tower_shadow");
   p.tower_potential = potential == "baseline" ? aero::TowerPotential::baseline
                       : potential == "bak"    ? aero::TowerPotential::bak

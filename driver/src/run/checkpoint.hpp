@@ -116,7 +116,7 @@ void write_checkpoint(const std::filesystem::path& file, const CheckpointHeader&
   const std::filesystem::path tmp = file.string() + ".tmp";
   {
     std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
-    os.write("FOWTSIMCHK1", 11);
+    os.write("FOWTSIMCHK2", 11);  // 2: aero node results carry the unsteady inputs, RotorAero its states
     CheckpointWriter w(os);
     w.put(header);
     save(w);

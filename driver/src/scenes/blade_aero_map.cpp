@@ -106,6 +106,14 @@ Vec3 BladeAeroMap::velocity(const beam::BeamState& state, const Along& a) const 
   return at(a.lower) + a.fraction * (at(a.lower + 1) - at(a.lower));
 }
 
+// The sections' angular velocity relative to f, linear between the beam nodes (the tip arm is
+// rigid: the last node's).
+Vec3 BladeAeroMap::angular_velocity(const beam::BeamState& state, const Along& a) const {
+  const int n = blade_.node_count();
+  auto at = [&](int i) -> Vec3 { return i < 0 ? Vec3(Vec3::Zero()) : Vec3(state.velocity[std::min(i, n - 1)].tail<3>()); };
+  return at(a.lower) + a.fraction * (at(a.lower + 1) - at(a.lower));
+}
+
 void BladeAeroMap::node_deformations(const beam::BeamState& state) const {
   for (int n = 0; n < blade_.node_count(); ++n)
     node_deformation_[n] = state.orientation[n] * blade_.nodes[n].orientation.transpose();
@@ -142,6 +150,10 @@ void BladeAeroMap::place(int b, const BladeFrame& frame, const beam::BeamState& 
     input.node_orientation[static_cast<std::size_t>(c)] = t_gf * d * a.airfoil_f;
     input.node_velocity_m_s.col(c) =
         frame.root_velocity_m_s + frame.angular_velocity_rad_s.cross(r) + t_gf * velocity(state, a.at);
+    // The section's rotation rate about its span axis (pitch, platform, bending and torsion
+    // rates; the caller removes the rotor spin's part): the unsteady airfoil model's ω.
+    input.node_pitch_rate_rad_s(c) = (frame.angular_velocity_rad_s + t_gf * angular_velocity(state, a.at))
+                                         .dot(input.node_orientation[static_cast<std::size_t>(c)].col(2));
   }
 }
 

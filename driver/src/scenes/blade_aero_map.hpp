@@ -61,6 +61,7 @@ class BladeAeroMap {
   };
   Vec3 position(const beam::BeamState& state, const Along& a) const;
   Vec3 velocity(const beam::BeamState& state, const Along& a) const;
+  Vec3 angular_velocity(const beam::BeamState& state, const Along& a) const;  // relative to f, in f
   // The deformation rotation R R0ᵀ of every node of a state, once per call of place/distribute
   // (workspace: sized at construction, no allocation).
   void node_deformations(const beam::BeamState& state) const;

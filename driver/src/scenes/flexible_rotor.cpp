@@ -121,10 +121,17 @@ void FlexibleRotor::evaluate_aero(double t, const ShaftMotion& shaft, bool solve
     frames[b] = frame(shaft, b);
     map_->place(b, frames[b], state_.blades[b], aero_->placed_input());
   }
+  // The unsteady airfoil model's ω leaves out the spin's steady component along a coned or bent
+  // blade's axis (as the rigid rotor does, RotorAero::evaluate): the static polars stand for it.
+  aero::Aero::Input& placed = aero_->placed_input();
+  const Vec3 spin = state_.spin.rotor_speed_rad_s * shaft.orientation.col(0);
+  for (Eigen::Index c = 0; c < placed.node_pitch_rate_rad_s.size(); ++c)
+    placed.node_pitch_rate_rad_s(c) -= spin.dot(placed.node_orientation[static_cast<std::size_t>(c)].col(2));
   const Mat3 t_gh = shaft.orientation * rotation_matrix(Vec3(state_.spin.rotor_azimuth_rad, 0.0, 0.0));
   aero_->evaluate_placed(t, shaft.apex_position_m, t_gh, state_.spin.rotor_speed_rad_s, state_.pitch_rad,
                          shaft.tower_base_m, shaft.tower_axis,
                          solve_induction ? aero::Induction::solve : aero::Induction::held);
+  aero_->advance_states_placed(t);  // unsteady airfoil / dynamic inflow states to t (if on)
   for (int b = 0; b < kBlades; ++b) map_->distribute(b, frames[b], state_.blades[b], aero_->output(), aero_loads_[b]);
 }
 

@@ -245,8 +245,12 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
       controller->advance(u, t, dt);
       stage_loads.hold(controller->output().generator_torque_N_m, controller->output().blade_pitch_rad[0]);
     }
-    if (!blades) multibody::Multibody::advance(model, stage_loads, t, dt, state);
-    else blades->advance(stage_loads, shaft_at, demands(), t, dt, state);
+    if (!blades) {
+      multibody::Multibody::advance(model, stage_loads, t, dt, state);
+      if (rotor) rotor->advance_states(model, state, t + dt, stage_loads.pitch_rad());  // UA/DBEMT, if on
+    } else {
+      blades->advance(stage_loads, shaft_at, demands(), t, dt, state);
+    }
     sea.advance(t + dt, platform_motion(state));
     max_rotor_speed = std::max(max_rotor_speed, std::abs(state.rotor_speed_rad_s));
   };

@@ -37,12 +37,14 @@ RotorAero::RotorAero(const io::ValidatedDeck& deck, const multibody::Params& str
   local_ = aero::make_input(params_);
   input_ = aero::make_input(params_);
   output_ = aero::make_output(params_);
+  state_ = aero::Aero::make_state(params_);
   points_.resize(static_cast<std::size_t>(aero::node_count(params_)));
   inflow_.resize(points_.size());
   aero_channel_count_ = aero::Aero::channels(params_).size();
 }
 
-void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad) {
+void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad,
+                         aero::Induction induction) {
   aero::place_rigid_rotor(params_, hub_frame_rotor_, 0.0, 0.0, pitch_rad, local_);
   const Mat3& t_gh = chain.rotor.orientation;
   const Vec3& apex = chain.apex.position_m;
@@ -60,11 +62,16 @@ void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, doub
     input_.node_position_m.col(c) = apex + r;
     input_.node_orientation[k] = t_gh * local_.node_orientation[k];
     input_.node_velocity_m_s.col(c) = chain.apex.velocity_m_s + omega.cross(r);
+    // The unsteady airfoil model's ω: the rotation of the section about its span axis z_a from the
+    // platform and nacelle motion (the non-rotating shaft's angular velocity). The spin's own
+    // component along a coned blade's axis (Ω sin precone, steady) is left out, so a rotor in
+    // steady wind keeps the quasi-steady loads of the static polars.
+    input_.node_pitch_rate_rad_s(c) = chain.shaft.angular_velocity_rad_s.dot(input_.node_orientation[k].col(2));
     points_[k] = apex + r;
   }
   wind_->velocities(points_, t, inflow_);
   for (std::size_t k = 0; k < points_.size(); ++k) input_.inflow_velocity_m_s.col(static_cast<Eigen::Index>(k)) = inflow_[k];
-  aero::evaluate(params_, input_, {}, output_);
+  aero::evaluate(params_, input_, state_, output_, induction);
 
   // The aero module's rotor resultant (exact integration of the linear load distribution, the
   // same numbers as the RtAero* channels), in h about the apex → g.
@@ -85,9 +92,32 @@ void RotorAero::evaluate_placed(double t, const Vec3& apex_m, const Mat3& t_gh, 
   for (std::size_t k = 0; k < points_.size(); ++k) points_[k] = input_.node_position_m.col(static_cast<Eigen::Index>(k));
   wind_->velocities(points_, t, inflow_);
   for (std::size_t k = 0; k < points_.size(); ++k) input_.inflow_velocity_m_s.col(static_cast<Eigen::Index>(k)) = inflow_[k];
-  aero::evaluate(params_, input_, {}, output_, induction);
+  aero::evaluate(params_, input_, state_, output_, induction);
   force_ = t_gh * output_.rotor.force_hub_N;
   moment_ = t_gh * output_.rotor.moment_hub_N_m;
+}
+
+void RotorAero::advance_states(const multibody::Model& model, const multibody::State& end, double t_end, double pitch_rad) {
+  if (!unsteady()) return;
+  multibody::chain_kinematics(model, end, chain_);
+  evaluate(t_end, chain_, end.rotor_speed_rad_s, pitch_rad, state_.started ? aero::Induction::held : aero::Induction::solve);
+  if (!state_.started) {
+    aero::start_states(params_, input_, output_, t_end, state_);
+    return;
+  }
+  aero::advance_states(params_, input_, output_, t_end - state_.time_s, state_);
+}
+
+void RotorAero::advance_states_placed(double t) {
+  if (!unsteady()) return;
+  if (!state_.started || !(t > state_.time_s)) {
+    aero::start_states(params_, input_, output_, t, state_);
+  } else {
+    aero::advance_states(params_, input_, output_, t - state_.time_s, state_);
+  }
+  aero::evaluate(params_, input_, state_, output_, aero::Induction::held);
+  force_ = input_.hub_orientation * output_.rotor.force_hub_N;
+  moment_ = input_.hub_orientation * output_.rotor.moment_hub_N_m;
 }
 
 template <class Archive>
@@ -116,6 +146,10 @@ void RotorAero::checkpoint(Archive& a) {
   a.io(output_.unconverged_nodes);
   a.io(force_);
   a.io(moment_);
+  a.io(state_.started);
+  a.io(state_.time_s);
+  a.io(state_.tau1_s);
+  a.io(state_.nodes);
 }
 template void RotorAero::checkpoint(CheckpointWriter&);
 template void RotorAero::checkpoint(CheckpointReader&);

@@ -46,6 +46,7 @@ void check_input(const Params& params, const Aero::Input& in) {
   require_finite(in.node_position_m.allFinite(), "node_position_m", t);
   require_finite(in.node_velocity_m_s.allFinite(), "node_velocity_m_s", t);
   require_finite(in.inflow_velocity_m_s.allFinite(), "inflow_velocity_m_s", t);
+  require_finite(in.node_pitch_rate_rad_s.allFinite(), "node_pitch_rate_rad_s", t);
   for (const Mat3& m : in.node_orientation) require_finite(m.allFinite(), "node_orientation", t);
   require_finite(in.tower_base_position_m.allFinite() && in.tower_axis.allFinite(), "tower pose", t);
 }
@@ -73,7 +74,19 @@ void integrate_blade(const Aero::Input& in, const Aero::Output& out, int first, 
   }
 }
 
+void set_coefficients(SectionSolution& sol, const AirfoilCoefficients& k) {
+  // c_n, c_t from the velocity triangle's φ, as section_with_induction() forms them.
+  const double sp = std::sin(sol.phi_rad), cp = std::cos(sol.phi_rad);
+  sol.coefficients = k;
+  sol.cn = k.cl * cp + k.cd * sp;
+  sol.ct = k.cl * sp - k.cd * cp;
+}
+
 }  // namespace
+
+UnsteadyAirfoilConstants unsteady_airfoil_constants(const Params& params) {
+  return {params.ua_pressure_time_constant, params.ua_separation_time_constant, params.ua_cutout_rad};
+}
 
 Aero::Input make_input(const Params& params) {
   const int n = node_count(params);
@@ -83,6 +96,7 @@ Aero::Input make_input(const Params& params) {
   in.node_orientation.assign(n, Mat3::Identity());
   in.node_velocity_m_s = Points::Zero(3, n);
   in.inflow_velocity_m_s = Points::Zero(3, n);
+  in.node_pitch_rate_rad_s = VecX::Zero(n);
   return in;
 }
 
@@ -102,11 +116,21 @@ Aero::Output Aero::outputs(const Params& params, const Input& input, const State
   return out;
 }
 
-void evaluate(const Params& params, const Aero::Input& in, const Aero::State&, Aero::Output& out, Induction induction) {
+void evaluate(const Params& params, const Aero::Input& in, const Aero::State& state, Aero::Output& out,
+              Induction induction) {
   check_input(params, in);
   const int nb = params.number_of_blades, nn = nodes_per_blade(params), n = nb * nn;
   require_size(out.force_N_m.cols() == n && static_cast<int>(out.nodes.size()) == n, "output (make_output)",
                out.force_N_m.cols(), n);
+  // The unsteady models act once their states are started (a default State is quasi-steady).
+  const bool filtered = state.started && params.dynamic_inflow == DynamicInflowModel::oye;
+  const bool dynamic_airfoil = state.started && params.unsteady_airfoil == UnsteadyAirfoilModel::hgm;
+  if (state.started)
+    require_size(static_cast<int>(state.nodes.size()) == n, "state (make_state)", static_cast<long>(state.nodes.size()), n);
+  const UnsteadyAirfoilConstants ua_constants = unsteady_airfoil_constants(params);
+  auto pitch_rate = [&](int i) { return in.node_pitch_rate_rad_s.size() == n ? in.node_pitch_rate_rad_s(i) : 0.0; };
+  double induction_sum = 0.0;
+  int induction_count = 0;
   const Vec3 x_h = in.hub_orientation.col(0);
 
   // Disk-mean relative inflow: reference speed of the coefficients and direction of the skew.
@@ -171,8 +195,16 @@ void evaluate(const Params& params, const Aero::Input& in, const Aero::State&, A
       s.number_of_blades = nb;
       const NodeResult& last = out.nodes[i];
       const SectionSolution& previous = last.section;
-      if (induction == Induction::held && previous.status == InductionStatus::converged &&
-          std::abs(s.axial_velocity_m_s) > 1e-6 && std::abs(s.tangential_velocity_m_s) > 1e-6) {
+      const bool moving = std::abs(s.axial_velocity_m_s) > 1e-6 && std::abs(s.tangential_velocity_m_s) > 1e-6;
+      const bool hold = induction == Induction::held && previous.status == InductionStatus::converged && moving;
+      SectionSolution sol;
+      double qs_axial = 0.0, qs_tangential = 0.0;  // quasi-steady a V_x, a' V_y
+      if (hold && filtered) {
+        // The filters replace the induction below; the quasi-steady input stays that of the last solve.
+        sol = previous;
+        qs_axial = last.quasi_steady_axial_induced_m_s;
+        qs_tangential = last.quasi_steady_tangential_induced_m_s;
+      } else if (hold) {
         // A frozen wake: the induced velocities a V_x and a' V_y of the last solve (skew
         // redistribution included) are held and the section's own motion enters the relative
         // velocity in full. Holding the factors a, a' instead would scale the blade's velocity by
@@ -181,21 +213,43 @@ void evaluate(const Params& params, const Aero::Input& in, const Aero::State&, A
         // last solve through any number of held calls.
         const double a = previous.axial_induction * last.axial_velocity_m_s / s.axial_velocity_m_s;
         const double ap = previous.tangential_induction * last.tangential_velocity_m_s / s.tangential_velocity_m_s;
-        store(i, t_gb, s, section_with_induction(s, polar, a, ap, previous));
-        continue;
+        sol = section_with_induction(s, polar, a, ap, previous);
+        qs_axial = a * s.axial_velocity_m_s;
+        qs_tangential = ap * s.tangential_velocity_m_s;
+      } else {
+        // Warm start from this node's root of the previous evaluation on the same Output.
+        sol = solve_section(s, polar, params, previous.root_phi_c_rad);
+        if (redistribute && sol.status == InductionStatus::converged) {
+          // Glauert/Pitt–Peters: a_skew = a [1 + K (r/R) tan(χ/2) cos ψ], ψ measured from the
+          // downwind side of the disk (where the in-plane inflow points), wake skew χ = (0.6 a + 1) χ0
+          // (Burton et al. 2011, Wind Energy Handbook §3.10), χ capped at 90°.
+          const double chi = std::min((0.6 * sol.axial_induction + 1.0) * skew, 0.5 * kPi);
+          const double cos_psi = s.local_radius_m > 0.0 ? r_vec.dot(downwind) / s.local_radius_m : 0.0;
+          const double factor = 1.0 + params.skew_factor * (s.local_radius_m / radius) * std::tan(0.5 * chi) * cos_psi;
+          sol = section_with_induction(s, polar, sol.axial_induction * factor, sol.tangential_induction, sol);
+        }
+        qs_axial = sol.axial_induction * s.axial_velocity_m_s;
+        qs_tangential = sol.tangential_induction * s.tangential_velocity_m_s;
       }
-      // Warm start from this node's root of the previous evaluation on the same Output.
-      SectionSolution sol = solve_section(s, polar, params, previous.root_phi_c_rad);
-      if (redistribute && sol.status == InductionStatus::converged) {
-        // Glauert/Pitt–Peters: a_skew = a [1 + K (r/R) tan(χ/2) cos ψ], ψ measured from the
-        // downwind side of the disk (where the in-plane inflow points), wake skew χ = (0.6 a + 1) χ0
-        // (Burton et al. 2011, Wind Energy Handbook §3.10), χ capped at 90°.
-        const double chi = std::min((0.6 * sol.axial_induction + 1.0) * skew, 0.5 * kPi);
-        const double cos_psi = s.local_radius_m > 0.0 ? r_vec.dot(downwind) / s.local_radius_m : 0.0;
-        const double factor = 1.0 + params.skew_factor * (s.local_radius_m / radius) * std::tan(0.5 * chi) * cos_psi;
-        sol = section_with_induction(s, polar, sol.axial_induction * factor, sol.tangential_induction, sol);
+      if (sol.status == InductionStatus::converged && moving) {
+        induction_sum += qs_axial / s.axial_velocity_m_s;
+        ++induction_count;
+      }
+      if (filtered && moving) {
+        // Dynamic inflow: the filtered induced velocities replace the quasi-steady ones.
+        const NodeUnsteadyState& u = state.nodes[i];
+        sol = section_with_induction(s, polar, u.axial.w / s.axial_velocity_m_s,
+                                     u.tangential.w / s.tangential_velocity_m_s, sol);
+      }
+      if (dynamic_airfoil) {
+        const SectionMotion m{sol.alpha_rad, sol.relative_speed_m_s, pitch_rate(i), node.chord_m};
+        set_coefficients(sol, unsteady_coefficients(polar, polar.separation(), ua_constants, m, state.nodes[i].airfoil));
       }
       store(i, t_gb, s, sol);
+      NodeResult& r = out.nodes[i];
+      r.theta_rad = theta;
+      r.quasi_steady_axial_induced_m_s = qs_axial;
+      r.quasi_steady_tangential_induced_m_s = qs_tangential;
     }
   }
 
@@ -206,6 +260,7 @@ void evaluate(const Params& params, const Aero::Input& in, const Aero::State&, A
   rotor.moment_hub_N_m = in.hub_orientation.transpose() * moment;
   rotor.power_W = in.rotor_speed_rad_s * rotor.moment_hub_N_m.x();
   rotor.mean_axial_inflow_m_s = u_axial;
+  rotor.mean_quasi_steady_axial_induction = induction_count > 0 ? induction_sum / induction_count : 0.0;
   rotor.skew_rad = skew;
   rotor.radius_m = radius;
   rotor.area_m2 = kPi * radius * radius;

@@ -1,6 +1,7 @@
 #include "fowtsim/aero/params.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,13 @@ void validate(const Params& params) {
   p.require(finite(params.skew_factor) && params.skew_factor >= 0.0, "skew_factor", params.skew_factor,
             ">= 0 (15*pi/32 is the Pitt-Peters value)");
   check_tower(params, p);
+  p.require(finite(params.ua_pressure_time_constant) && params.ua_pressure_time_constant > 0.0,
+            "ua_pressure_time_constant", params.ua_pressure_time_constant, "> 0 (HGM: 1.5)");
+  p.require(finite(params.ua_separation_time_constant) && params.ua_separation_time_constant > 0.0,
+            "ua_separation_time_constant", params.ua_separation_time_constant, "> 0 (HGM: 6.0)");
+  p.require(finite(params.ua_cutout_rad) && params.ua_cutout_rad >= 5.0 * std::numbers::pi / 180.0 &&
+                params.ua_cutout_rad <= 0.5 * std::numbers::pi,
+            "ua_cutout_deg", params.ua_cutout_rad * 180.0 / std::numbers::pi, "in [5, 90] degrees (AeroDyn: 45)");
   if (params.output_nodes.size() > 9) {
     p.lines.push_back(fmt::format("aero.output_nodes: {} entries (expected at most 9, as AeroDyn's "
                                   "BlOutNd)", params.output_nodes.size()));

@@ -94,6 +94,7 @@ Polar::Polar(std::string name, const std::vector<double>& alpha_deg, std::vector
     cd2_ = natural_spline_second_derivatives(alpha_, cd_);
     cm2_ = natural_spline_second_derivatives(alpha_, cm_);
   }
+  separation_ = derive_separation(*this);
 }
 
 AirfoilCoefficients Polar::evaluate(double alpha_rad) const {

@@ -13,14 +13,18 @@
 //   x_a = y_a × z_a normal to the chord (toward the pressure side in normal operation, downwind).
 //   With zero twist and pitch it is the coned blade frame b (OpenFAST blade coordinates).
 //
-// Quasi-steady: State is empty. Dynamic inflow (per-node filtered induction, Øye) and unsteady
-// airfoil aerodynamics (per-node Beddoes–Leishman states) will live in State and be integrated by
-// advance(); evaluate() reads them. The per-node results in Output are what those models filter.
+// Unsteady models (Params::unsteady_airfoil, Params::dynamic_inflow; both off by default): their
+// per-node states live in State. evaluate() reads them (a const State: the loads at any time within
+// a step, e.g. Runge–Kutta stages or output rows, with the states of the step's start) and
+// advance_states() integrates them over a step from the evaluation at its end (README "Unsteady
+// models"). With both off, or a State not yet started, evaluate() is the quasi-steady BEM.
 #include <span>
 #include <vector>
 
 #include "fowtsim/aero/bem.hpp"
+#include "fowtsim/aero/dynamic_inflow.hpp"
 #include "fowtsim/aero/params.hpp"
+#include "fowtsim/aero/unsteady_airfoil.hpp"
 #include "fowtsim/core/channels.hpp"
 #include "fowtsim/core/types.hpp"
 
@@ -35,6 +39,11 @@ struct NodeResult {
   double tangential_velocity_m_s = 0.0; // V_y along y_b [m/s]
   double normal_force_N_m = 0.0;   // along x_b, q c c_n (AeroDyn B·N·Fx) [N/m]
   double tangential_force_N_m = 0.0;  // along −y_b (direction of rotation), q c c_t (B·N·Fy) [N/m]
+  double theta_rad = 0.0;          // θ = twist + pitch [rad]
+  // Quasi-steady induced velocities a V_x, a' V_y of the BEM solve (after skew): the input of the
+  // dynamic-inflow filters [m/s]. With dynamic inflow off they are those of `section`.
+  double quasi_steady_axial_induced_m_s = 0.0;
+  double quasi_steady_tangential_induced_m_s = 0.0;
 };
 
 struct RotorResult {
@@ -49,12 +58,26 @@ struct RotorResult {
   double cp = 0.0;                      // P / (½ρ A U³) (RtAeroCp) [-]; same guard
   double ct = 0.0;                      // F_xh / (½ρ A U²) (RtAeroCt) [-]
   double cq = 0.0;                      // M_xh / (½ρ A U² R) (RtAeroCq) [-]
+  double mean_quasi_steady_axial_induction = 0.0;  // ā of the BEM solve over converged nodes (Øye's τ1) [-]
+};
+
+// Unsteady states of one node (plain data, checkpointed byte for byte).
+struct NodeUnsteadyState {
+  OyeFilter axial, tangential;            // dynamic inflow filters of a V_x and a' V_y [m/s]
+  double quasi_steady_axial_m_s = 0.0;    // W_qs at the state's time (start of the next hold) [m/s]
+  double quasi_steady_tangential_m_s = 0.0;
+  UnsteadyAirfoilState airfoil;           // HGM states and their inputs at the state's time
 };
 
 struct Aero {
   using Params = aero::Params;
 
-  struct State {};  // quasi-steady BEM and airfoils: nothing to integrate yet (see header note)
+  struct State {
+    bool started = false;   // false: evaluate() is quasi-steady; advance_states() starts the states
+    double time_s = 0.0;    // time of the states [s]
+    double tau1_s = 0.0;    // Øye's τ1 at time_s [s]
+    std::vector<NodeUnsteadyState> nodes;  // (B·N) when a model is on, else empty
+  };
 
   struct Input {
     Vec3 hub_position_m = Vec3::Zero();    // rotor apex (hub centre) in g [m]
@@ -65,6 +88,8 @@ struct Aero {
     std::vector<Mat3> node_orientation;    // (B·N) T_ga of each node's airfoil frame [-]
     Points node_velocity_m_s;              // (3 × B·N) structural velocity of the nodes in g [m/s]
     Points inflow_velocity_m_s;            // (3 × B·N) undisturbed wind at the nodes in g [m/s]
+    VecX node_pitch_rate_rad_s;            // (B·N) section rotation rate about z_a (+ raises α) for the
+                                           // unsteady airfoil model; may be left zero [rad/s]
     Vec3 tower_base_position_m = Vec3::Zero();  // tower axis point at elevation 0 in g [m]
     Vec3 tower_axis = Vec3::UnitZ();       // unit vector up the tower axis in g [-]
     double time_s = 0.0;                   // simulation time [s], only for error messages
@@ -79,8 +104,11 @@ struct Aero {
     int unconverged_nodes = 0;       // nodes with InductionStatus::no_root (zero induction used)
   };
 
-  static State make_state(const Params&) { return {}; }
-  static void advance(const Params&, const Input&, double, double, State&) {}
+  // Sized for the models the params ask for (empty when both are off), not started.
+  static State make_state(const Params& params);
+  // Module contract: evaluates at t + dt into a temporary Output and calls advance_states(). The
+  // time loop calls evaluate() + advance_states() on a reused Output instead (no allocation).
+  static void advance(const Params& params, const Input& input_at_end, double t, double dt, State& state);
   // Allocates the Output; the time loop should call evaluate() on a reused one.
   static Output outputs(const Params& params, const Input& input, const State& state);
   static std::vector<ChannelInfo> channels(const Params& params);
@@ -102,6 +130,30 @@ enum class Induction { solve, held };
 // nothing. Throws InputError on a mis-sized input and NumericalError on non-finite data.
 void evaluate(const Params& params, const Aero::Input& input, const Aero::State& state,
               Aero::Output& output, Induction induction = Induction::solve);
+
+// True when the params ask for an unsteady model (then the driver advances the states).
+inline bool has_unsteady_models(const Params& p) {
+  return p.unsteady_airfoil != UnsteadyAirfoilModel::none || p.dynamic_inflow != DynamicInflowModel::none;
+}
+
+// τ_p, τ_f and the cutout of params for the unsteady airfoil model.
+UnsteadyAirfoilConstants unsteady_airfoil_constants(const Params& params);
+
+// Sets the states to their steady values for the evaluation `at` (an evaluate() of `input` with
+// this state) at time t: the filters at the quasi-steady induction, the airfoil states at the
+// nodes' α, W and ω. A later evaluate() of the same input then returns the same loads (to round-off).
+void start_states(const Params& params, const Aero::Input& input, const Aero::Output& at, double t,
+                  Aero::State& state);
+
+// Advances the states from state.time_s to t_end = state.time_s + dt. `at_end` is an evaluate() of
+// `input_at_end` (the rotor at t_end) with the state still at its start: it supplies the
+// quasi-steady induction and the node kinematics at t_end. The dynamic-inflow filters are solved
+// exactly with W_qs linear over the step (τ1 from the mean of the disk's ā, Ū, R at both ends),
+// then α, W at t_end are recomputed with the new filtered induction, then the airfoil states are
+// advanced (advance_unsteady_airfoil). Starts the states instead if they are not started.
+// Allocates nothing.
+void advance_states(const Params& params, const Aero::Input& input_at_end, const Aero::Output& at_end, double dt,
+                    Aero::State& state);
 
 // Values of channels(params) in the same order; values.size() must equal channels(params).size().
 void channel_values(const Params& params, const Aero::Input& input, const Aero::Output& output,

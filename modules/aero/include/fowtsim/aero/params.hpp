@@ -20,6 +20,18 @@ enum class SkewModel {
                 // SkewRedistr_Mod 1, SkewMomCorr false)
 };
 
+// Unsteady airfoil aerodynamics (unsteady_airfoil.hpp). Off: the static polar (quasi-steady).
+enum class UnsteadyAirfoilModel {
+  none,  // static polar
+  hgm,   // Hansen, Gaunaa & Madsen (2004) four-state model (AeroDyn UA_Mod 4)
+};
+
+// Dynamic inflow (dynamic_inflow.hpp). Off: the induction of the steady BEM solve (quasi-steady).
+enum class DynamicInflowModel {
+  none,  // quasi-steady BEM induction
+  oye,   // Øye's two-filter model on the induced velocities (AeroDyn DBEMT_Mod 2, continuous)
+};
+
 enum class TowerPotential { none, baseline, bak };  // AeroDyn TwrPotent 0, 1, 2
 enum class TowerShadow { none, powles, eames };      // AeroDyn TwrShadow 0, 1, 2
 
@@ -62,6 +74,14 @@ struct Params {
   SkewModel skew_model = SkewModel::pitt_peters;
   double skew_factor = 15.0 * std::numbers::pi / 32.0;  // K of the redistribution [-] (≥ 0)
   bool pitching_moment = true;              // apply C_m (UseBlCm)
+
+  // Unsteady models; both off by default (a rotor that does not ask computes none of it). Their
+  // states live in Aero::State and are advanced by advance_states().
+  UnsteadyAirfoilModel unsteady_airfoil = UnsteadyAirfoilModel::none;
+  double ua_pressure_time_constant = 1.5;    // τ_p in units of c/(2W) (HGM; AeroDyn T_p0 = 1.7) (> 0)
+  double ua_separation_time_constant = 6.0;  // τ_f in units of c/(2W) (HGM; AeroDyn T_f0 = 3) (> 0)
+  double ua_cutout_rad = 45.0 * std::numbers::pi / 180.0;  // static polar beyond |α| (UACutout) (5°…90°)
+  DynamicInflowModel dynamic_inflow = DynamicInflowModel::none;
 
   TowerPotential tower_potential = TowerPotential::none;
   TowerShadow tower_shadow = TowerShadow::none;

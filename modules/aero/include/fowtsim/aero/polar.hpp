@@ -19,6 +19,22 @@ struct AirfoilCoefficients {
   double cm = 0.0;  // pitching-moment coefficient about the quarter chord, + nose up [-]
 };
 
+// What the model reads from a static polar (derive_separation(); every Polar holds its own,
+// derived when it is built).
+struct SeparationData {
+  bool lifting = false;              // false: no zero-lift crossing within ±20° (cylinders): static polar
+  double alpha0_rad = 0.0;           // α0: C_l^st(α0) = 0, the rising crossing nearest 0
+  double lift_slope_per_rad = 0.0;   // C_l,α: least-squares slope of C_l^st over α0 − 3° … α0 + 5°
+  double alpha_low_rad = 0.0;        // first α below α0 where f_st reaches 0 (fully separated)
+  double alpha_high_rad = 0.0;       // first α above α0 where f_st reaches 0
+  double cd0 = 0.0;                  // C_d^st(α0)
+};
+
+// α0, C_l,α and the separation range of a polar, found on a 0.05° grid of the interpolated polar
+// (α0 then refined by bisection to 1e-12 rad). Defined in unsteady_airfoil.cpp.
+class Polar;
+SeparationData derive_separation(const Polar& polar);
+
 class Polar {
  public:
   // Validates and precomputes the spline. alpha_deg strictly increasing, from −180 to 180
@@ -36,12 +52,15 @@ class Polar {
   const std::vector<double>& cl() const { return cl_; }
   const std::vector<double>& cd() const { return cd_; }
   const std::vector<double>& cm() const { return cm_; }
+  // α0, C_l,α and the separation range for the unsteady airfoil model (unsteady_airfoil.hpp).
+  const SeparationData& separation() const { return separation_; }
 
  private:
   std::string name_;
   PolarInterpolation interpolation_;
   std::vector<double> alpha_, cl_, cd_, cm_;    // table [rad], [-]
   std::vector<double> cl2_, cd2_, cm2_;         // spline second derivatives [1/rad²]; empty if linear
+  SeparationData separation_;
 };
 
 // Wraps an angle into [−π, π).
