@@ -6,7 +6,8 @@ import sys
 
 import numpy as np
 
-CASES = [("morison", "Morison, quasi-steady (before)"), ("wamit", "WAMIT"), ("wamit_ua", "WAMIT + UA")]
+CASES = [("morison", "Morison, quasi-steady (before)"), ("wamit", "WAMIT"), ("wamit_ua", "WAMIT + UA"),
+         ("wamit_ua_dbemt", "WAMIT + UA + DBEMT")]
 CHANNELS = [  # (OpenFAST name, ours, unit)
     ("RotSpeed", "RotSpeed", "rpm"), ("BldPitch1", "BldPitch1", "deg"), ("GenPwr", "GenPwr", "kW"),
     ("PtfmSurge", "PtfmSurge", "m"), ("PtfmHeave", "PtfmHeave", "m"), ("PtfmPitch", "PtfmPitch", "deg"),

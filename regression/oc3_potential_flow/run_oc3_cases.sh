@@ -4,8 +4,9 @@
 # flexible blades, once per hydro/aero model:
 #   morison      Morison strips (Ca = 1) and nonlinear hydrostatics, quasi-steady airfoils (before);
 #   wamit        WAMIT potential flow as OpenFAST's deck (inputs/oc3_hywind/hydro_potential_flow.yaml);
-#   wamit_ua     the same with unsteady airfoil aerodynamics (OpenFAST's deck runs UA_Mod 3).
-# Two runs at a time, then compare.py: the table of means, standard deviations and correlations
+#   wamit_ua     the same with unsteady airfoil aerodynamics (OpenFAST's deck runs UA_Mod 3);
+#   wamit_ua_dbemt  and with Øye's dynamic inflow (OpenFAST's deck has DBEMT off: for information).
+# Two runs at a time (≈ 1 minute on 2 cores), then compare.py: the table of means, standard deviations and correlations
 # against OpenFAST's `…_600s.out`, the wave-to-motion transfer functions (RAOs) of heave, pitch and
 # surge, and the checks. Usage: run_oc3_cases.sh FOWTSIM OUTDIR. Skips without the reference data.
 set -euo pipefail
@@ -37,8 +38,9 @@ DECK
 write_deck morison hydro.yaml ""
 write_deck wamit hydro_potential_flow.yaml ""
 write_deck wamit_ua hydro_potential_flow.yaml "aero: {unsteady_airfoil: hgm}"
+write_deck wamit_ua_dbemt hydro_potential_flow.yaml "aero: {unsteady_airfoil: hgm, dynamic_inflow: oye}"
 pids=()
-for case in morison wamit wamit_ua; do
+for case in morison wamit wamit_ua wamit_ua_dbemt; do
   "$fowtsim" run "$out/$case.yaml" -o "$out/$case" > "$out/$case.log" 2>&1 &
   pids+=($!)
   if [ ${#pids[@]} -ge 2 ]; then wait "${pids[0]}"; pids=("${pids[@]:1}"); fi
