@@ -100,7 +100,6 @@ TEST_CASE("HGM on OpenFAST's ua_redfreq case: the lift loop of UA_Mod 3 (DU21, 7
       loop_ours += 0.5 * (c.cl + last_cl) * (r.alpha_deg - last_alpha) * kDegree;
       loop_ref += 0.5 * (r.cl + last_ref) * (r.alpha_deg - last_alpha) * kDegree;
     }
-    std::printf("ua_redfreq t %.4f alpha %.3f: Cl %.4f vs UA3 %.4f, Cm %.4f vs %.4f\n", r.t, r.alpha_deg, c.cl, r.cl, c.cm, r.cm);
     last_alpha = r.alpha_deg;
     last_cl = c.cl;
     last_ref = r.cl;
