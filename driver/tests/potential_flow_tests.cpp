@@ -46,6 +46,13 @@ TEST_CASE("the OC3 spar's WAMIT damping, as a retardation kernel, gives back its
     for (const Mat6& k : kernel) peak = std::max(peak, std::abs(k(i, i)));
     CHECK(std::abs(kernel[1200](i, i)) < 0.01 * peak);
   }
+  // K(0) = (2/π) ∫ B dω: the trapezoidal area of the piecewise-linear B (from B(0) = 0), exactly.
+  for (int i : {0, 2, 4}) {
+    double area = 0.5 * r.frequencies_rad_s[0] * r.damping[0](i, i);
+    for (std::size_t f = 1; f < r.frequencies_rad_s.size(); ++f)
+      area += 0.5 * (r.frequencies_rad_s[f] - r.frequencies_rad_s[f - 1]) * (r.damping[f](i, i) + r.damping[f - 1](i, i));
+    CHECK(kernel[0](i, i) == Approx(2.0 / std::numbers::pi * area).epsilon(1e-12));  // rounding only
+  }
   for (std::size_t f = 0; f < r.frequencies_rad_s.size(); f += 5) {
     const double omega = r.frequencies_rad_s[f];
     if (omega < 0.2 || omega > 2.0) continue;  // the band the spar's motions and waves live in
