@@ -1,6 +1,7 @@
 // The state-space alternative to the radiation convolution (kernel_realization.hpp): Kung's
 // realisation must give back a kernel that is a sum of exponentials, poles and all.
 #include <cmath>
+#include <cstdio>
 #include <complex>
 #include <vector>
 
@@ -17,6 +18,7 @@ TEST_CASE("Kung's realisation recovers a kernel made of a damped oscillation and
   for (int k = 0; k < 300; ++k) samples.push_back(exact(0.1 * k));
   const ExponentialFit fit = fit_exponentials(samples, 0.1, 1e-9, 10);
   // Noise-free data: order 3 reproduces it to round-off (measured below 1e-12 relative).
+  std::printf("Kung realisation of a three-pole kernel: relative error %.2e\n", fit.relative_error);
   CHECK(fit.relative_error < 1e-9);
   CHECK(fit.order == 3);
   bool pair = false, decay = false;
