@@ -1,15 +1,21 @@
 #pragma once
 // Hydrodynamic and hydrostatic loads on a floating platform made of circular members (seed 000
 // §4.2, §4.4.2): Morison strip theory at the instantaneous position and motion of each member,
-// nonlinear hydrostatics at the instantaneous position, and the deck's linear extras. No memory
-// effects, so the module has no state; everything is a pure function of Params and Input.
+// nonlinear hydrostatics at the instantaneous position, and the deck's linear extras; optionally
+// WAMIT potential flow (potential_flow.hpp: A(∞), the radiation memory, the excitation the driver
+// hands in, linear .hst hydrostatics). Without potential flow there is no memory and outputs() is a
+// pure function of Params and Input; with it, State is the radiation memory at t_n, advance()
+// moves it one platform step, and outputs() at any stage time in [t_n, t_n + ΔT] only reads it.
 //
 // Coupling with the waves module goes through the driver (modules do not include each other):
 //   1. (SurfaceModel::wave_elevation only) waterline_points() → the driver samples the wave
 //      elevation there → Input::surface_elevation_m;
 //   2. strip_points() → the driver evaluates fluid velocity, acceleration and dynamic pressure at
 //      those points → Input::fluid_*;
-//   3. outputs() → loads at the reference point and the added-mass matrix.
+//   3. (potential flow with excitation) the driver interpolates the precomputed excitation
+//      records → Input::wave_excitation;
+//   4. outputs() → loads at the reference point and the added-mass matrix; after the platform's
+//      step, advance() with the motion at its end.
 // The pose handed to outputs() must be the one given to strip_points().
 #include <span>
 #include <vector>
