@@ -83,12 +83,39 @@ void history_sums(const RadiationModel& model, const RadiationState& state, cons
   }
 }
 
-// The three on-grid history parts (h = 0, ΔT/2, ΔT), once per step.
+// The three on-grid history parts (h = 0, ΔT/2, ΔT), summed directly (at the start).
 void update_history_loads(const RadiationModel& model, RadiationState& state) {
   constexpr int bases[3] = {0, 1, 2};
   Vec6 out[3];
   history_sums(model, state, bases, 0.0, out);
   for (int stage = 0; stage < 3; ++stage) state.history_load[static_cast<std::size_t>(stage)] = out[stage];
+}
+
+// One step on: the new h = 0 part follows from the old h = ΔT part, which holds the same products
+// K((s + 1)ΔT) q̇_{n−s} but for the trapezoid's end weights and the window's ends:
+//   S₀(n+1) = S_ΔT(n) + ½ΔT [K(0) q̇_{n+1} + K(ΔT) q̇_n − K(NΔT) q̇_{n−N+1} − K((N+1)ΔT) q̇_{n−N}]
+// (S the sums, the loads −S). S_ΔT is summed directly every step, so nothing accumulates; the
+// ΔT/2 and ΔT parts are summed anew in one pass. `velocity` is q̇_{n+1}, not yet in the ring.
+void step_history_loads(const RadiationModel& model, const Vec6& velocity, RadiationState& state) {
+  const auto size = static_cast<int>(state.history.size());
+  const int n = model.window_steps;
+  const Vec6& newest = state.history[static_cast<std::size_t>(state.newest)];                       // q̇_n
+  const Vec6& oldest = state.history[static_cast<std::size_t>((state.newest + 1) % size)];          // q̇_{n−N}
+  const Vec6& second_oldest = state.history[static_cast<std::size_t>((state.newest + 2) % size)];   // q̇_{n−N+1}
+  const std::size_t entries = model.entries.size();
+  const auto k = [&](int j, std::size_t e) { return model.kernel[static_cast<std::size_t>(2 * j) * entries + e]; };
+  Vec6 h0 = state.history_load[2];
+  for (std::size_t e = 0; e < entries; ++e) {
+    const int c = model.entries[e].col;
+    h0[model.entries[e].row] -= 0.5 * model.step_s *
+                                (k(0, e) * velocity[c] + k(1, e) * newest[c] - k(n, e) * second_oldest[c] - k(n + 1, e) * oldest[c]);
+  }
+  state.newest = (state.newest + 1) % size;
+  state.history[static_cast<std::size_t>(state.newest)] = velocity;
+  constexpr int bases[2] = {1, 2};
+  Vec6 out[2];
+  history_sums(model, state, bases, 0.0, out);
+  state.history_load = {h0, out[0], out[1]};
 }
 
 }  // namespace
@@ -213,12 +240,10 @@ void advance_radiation(const RadiationModel& model, double t_end_s, const Vec6& 
         xi = modal_update(e.fit.terms[m].pole, xi, model.step_s, state.velocity[e.col], velocity[e.col]);
       }
   } else {
-    state.newest = (state.newest + 1) % static_cast<int>(state.history.size());
-    state.history[static_cast<std::size_t>(state.newest)] = velocity;
+    step_history_loads(model, velocity, state);
   }
   state.velocity = velocity;
   state.time_s = t_end_s;
-  if (model.method == RadiationMethod::convolution) update_history_loads(model, state);
 }
 
 }  // namespace fowtsim::hydro

@@ -1,6 +1,7 @@
 // Potential flow inside the hydro module (params.hpp PotentialFlowParams, Hydrostatics::linear):
 // what it adds to and removes from the Morison/hydrostatic model, on a synthetic radiation table.
 #include <cmath>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -79,4 +80,30 @@ TEST_CASE("linear hydrostatics: ρ g V0 at rest, − C_hst q when displaced", "[
   CHECK(moved.buoyancy[4] == Approx(4.9992e9 * 0.1).epsilon(1e-12));
   p.displaced_volume_m3 = 0.0;
   CHECK_THROWS_AS(validate(p), InputError);
+}
+
+TEST_CASE("the convolution's stepped history sums equal the trapezoidal sum over the whole window", "[unit][hydro]") {
+  // advance() derives the h = 0 part from the previous step's h = ΔT part; after more steps than
+  // the window holds, the load at t_n must still be −[Σ_s w_s K(sΔT) q̇_{n−s}] summed afresh.
+  const Params p = with_potential_flow(oc3_hywind_params(), RadiationMethod::convolution);
+  const RadiationModel& m = p.potential_flow->radiation;
+  const int n = m.window_steps;
+  RadiationState s = make_radiation_state(m, 0.0, Vec6::Zero());
+  std::vector<Vec6> velocities{Vec6::Zero()};
+  for (int k = 1; k <= n + 40; ++k) {
+    Vec6 v;
+    for (int i = 0; i < 6; ++i) v[i] = std::sin(0.37 * k + i) + 0.3 * std::cos(1.9 * k * (i + 1));
+    advance_radiation(m, k * m.step_s, v, s);
+    velocities.push_back(v);
+  }
+  const std::size_t entries = m.entries.size();
+  Vec6 direct = Vec6::Zero();
+  for (int j = 0; j <= n; ++j) {
+    const double w = (j == 0 || j == n) ? 0.5 * m.step_s : m.step_s;
+    const Vec6& v = velocities[velocities.size() - 1 - static_cast<std::size_t>(j)];
+    for (std::size_t e = 0; e < entries; ++e)
+      direct[m.entries[e].row] -= w * m.kernel[static_cast<std::size_t>(2 * j) * entries + e] * v[m.entries[e].col];
+  }
+  const Vec6 load = radiation_load(m, s, s.time_s, velocities.back());
+  CHECK((load - direct).norm() < 1e-12 * direct.norm());  // rounding: the sums differ in order only
 }
