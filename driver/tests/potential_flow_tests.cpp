@@ -205,6 +205,8 @@ TEST_CASE("bad potential-flow input stops before anything is written, naming the
   };
   expect_error("missing_wamit", "hydro: {potential_flow: {wamit_root: no/such/Spar}}\n", "Spar.1");
   expect_error("linear_without_wamit", "hydro: {hydrostatics: linear, displaced_volume_m3: 8029.21}\n", "potential_flow");
+  expect_error("short_window", "hydro: {potential_flow: {wamit_root: no/such/Spar, radiation_window_s: 0.04}}\n",
+               "radiation_window_s");
 }
 
 TEST_CASE("OC3 heave in regular waves with WAMIT potential flow follows the frequency-domain RAO", "[verification][hydro]") {

@@ -140,6 +140,10 @@ HydroDeck read_hydro_deck(const io::ValidatedDeck& d, double large_step_s) {
                                                 "ROOT.hst) and displaced_volume_m3");
   if (d.has("potential_flow")) {
     const io::ValidatedDeck f = d.section("potential_flow");
+    if (!(f.number("radiation_window_s") > large_step_s))
+      throw InputError({"hydro", std::nullopt, "potential_flow.radiation_window_s", "a window longer than the time step"},
+                       where(f, "radiation_window_s") + fmt::format(": {} s is not longer than the time step {} s",
+                                                                    f.number("radiation_window_s"), large_step_s));
     const std::filesystem::path root = beside_deck(f, "wamit_root");
     const io::WamitScales scales{p.water_density_kg_m3, p.gravity_m_s2, f.number("length_scale_m")};
     const auto with_extension = [&](const char* extension) { return std::filesystem::path(root.string() + extension); };
