@@ -24,7 +24,6 @@ class PrecomputedResponse {
                       double samples_per_shortest_period = 8.0);
 
   std::size_t size() const { return channels_; }
-  double sample_dt_s() const { return duration_s_ / static_cast<double>(samples_); }
   // y_c(t), any t (the record repeats). Allocation free.
   double value(std::size_t channel, double t_s) const;
 
