@@ -132,6 +132,22 @@ std::vector<std::uint64_t> SeaModules::seeds() const {
 std::vector<std::string> SeaModules::warnings() const {
   std::vector<std::string> out;
   if (excitation_ && excitation_->coverage_warning()) out.push_back(*excitation_->coverage_warning());
+  if (hydro_ && hydro_->potential_flow) {
+    // The radiation model's own doubts: a window that cuts off more than 1 % of a kernel's peak
+    // (the OC3 spar at 60 s: none), a state-space fit that missed the tolerance at its largest order.
+    const hydro::RadiationModel& r = hydro_->potential_flow->radiation;
+    for (const hydro::RadiationEntry& e : r.entries) {
+      const std::string entry = fmt::format("radiation kernel K{}{}", e.row + 1, e.col + 1);
+      if (e.tail_ratio > 0.01)
+        out.push_back(fmt::format("{} is still {:.1f} % of its peak at the end of the {:.3g}-s window: lengthen "
+                                  "hydro.potential_flow.radiation_window_s",
+                                  entry, 100.0 * e.tail_ratio, r.window_steps * r.step_s));
+      if (r.method == hydro::RadiationMethod::state_space && e.fit.relative_error > r.fit_tolerance)
+        out.push_back(fmt::format("{}: the state-space fit reaches {:.2g} % relative error at order {}, above the "
+                                  "tolerance {:.2g} %: raise hydro.potential_flow.state_space_max_order",
+                                  entry, 100.0 * e.fit.relative_error, e.fit.order, 100.0 * r.fit_tolerance));
+    }
+  }
   if (!has_waves_) return out;
   // Deep-water steepness H/L against the breaking limit 1/7 (Michell 1893): a linear sea that
   // steep is outside the theory the wave model rests on.

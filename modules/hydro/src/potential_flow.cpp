@@ -132,6 +132,7 @@ RadiationModel make_radiation_model(const RadiationTable& table, const Radiation
   model.step_s = options.step_s;
   model.window_steps = static_cast<int>(std::ceil(options.window_s / options.step_s - 1e-9));
   model.added_mass_infinite_frequency = table.added_mass_infinite_frequency;
+  model.fit_tolerance = options.fit_tolerance;
   // Kernel at ΔT/2 over the window and the two half steps a stage can add.
   const double half = 0.5 * options.step_s;
   std::vector<double> times(static_cast<std::size_t>(2 * model.window_steps + 3));
@@ -144,6 +145,13 @@ RadiationModel make_radiation_model(const RadiationTable& table, const Radiation
       RadiationEntry e;
       e.row = i;
       e.col = j;
+      double peak = 0.0, tail = 0.0;
+      const auto last_second = static_cast<std::size_t>(std::max(0.0, 2.0 * model.window_steps - 2.0 / options.step_s));
+      for (std::size_t k = 0; k <= static_cast<std::size_t>(2 * model.window_steps); ++k) {
+        peak = std::max(peak, std::abs(kernel[k](i, j)));
+        if (k >= last_second) tail = std::max(tail, std::abs(kernel[k](i, j)));
+      }
+      e.tail_ratio = peak > 0.0 ? tail / peak : 0.0;
       if (model.method == RadiationMethod::state_space) {
         std::vector<double> samples_ij(times.size());
         for (std::size_t k = 0; k < times.size(); ++k) samples_ij[k] = kernel[k](i, j);

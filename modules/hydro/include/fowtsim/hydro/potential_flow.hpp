@@ -50,6 +50,9 @@ struct RadiationEntry {
   int row = 0, col = 0;         // i (load), j (velocity)
   ExponentialFit fit;           // state_space
   int first_term = 0;           // state_space: its first state in RadiationState::modal
+  double tail_ratio = 0.0;      // |K_ij| over the last second of the window / its peak: how much
+                                //   memory the window cuts off (HydroDyn: "make sure RdtnTMax is
+                                //   long enough for the kernels to decay")
 };
 
 struct RadiationModel {
@@ -62,6 +65,7 @@ struct RadiationModel {
   // entries of one time side by side: one pass over the history serves them all)
   std::vector<double> kernel;
   int term_count = 0;           // state_space: complex states
+  double fit_tolerance = 0.0;   // state_space: the tolerance asked for (a fit may miss it: see fit)
 };
 
 // The radiation memory at t_n: copyable, checkpointed by the driver.
