@@ -47,6 +47,20 @@ struct Rotor {
   }
 };
 
+// The NREL 5MW rotor twice, quasi-steady and with UA + DBEMT, both tilted 5° with 2.5° precone.
+struct RotorPair {
+  Rotor quasi_steady, unsteady;
+  RotorPair() : quasi_steady(aero::testing::load_nrel5mw_deck()), unsteady(with_unsteady_models()) {
+    quasi_steady.geometry = unsteady.geometry = RigidRotor{Vec3(0.0, 0.0, 90.0), 0.0, 5.0 * kDegree, 2.5 * kDegree, 1.5};
+  }
+  static Params with_unsteady_models() {
+    Params p = aero::testing::load_nrel5mw_deck();
+    p.unsteady_airfoil = UnsteadyAirfoilModel::hgm;
+    p.dynamic_inflow = DynamicInflowModel::oye;
+    return p;
+  }
+};
+
 }  // namespace
 
 // Intent: the discrete update is the exact solution of the continuous filters, whatever the step.
@@ -72,12 +86,10 @@ TEST_CASE("Oye filter step response equals the closed form at any step size", "[
 
 // Intent: with the states started in steady flow, UA + DBEMT give steady BEM exactly.
 TEST_CASE("unsteady models started in steady flow reproduce steady BEM", "[unit][aero]") {
-  Params p = aero::testing::load_nrel5mw_deck();
-  Rotor steady(p);
-  p.unsteady_airfoil = UnsteadyAirfoilModel::hgm;
-  p.dynamic_inflow = DynamicInflowModel::oye;
-  Rotor r(p);
-  r.geometry = steady.geometry = RigidRotor{Vec3(0.0, 0.0, 90.0), 0.0, 5.0 * kDegree, 2.5 * kDegree, 1.5};
+  RotorPair pair;
+  Rotor& steady = pair.quasi_steady;
+  Rotor& r = pair.unsteady;
+  const Params& p = r.params;
   for (double wind : {5.0, 11.0, 18.0}) {
     const double pitch = wind > 11.4 ? 15.0 * kDegree : 0.0;
     steady.place(0.3, pitch, wind);
@@ -101,12 +113,10 @@ TEST_CASE("unsteady models started in steady flow reproduce steady BEM", "[unit]
 // Intent: the NREL 5MW rotor (tilt 5°, precone 2.5°: the blades see a once-per-revolution
 // variation) in steady wind with UA + DBEMT settles to the quasi-steady power and thrust.
 TEST_CASE("NREL 5MW rotor with UA and DBEMT in steady wind matches quasi-steady", "[verification][aero]") {
-  Params p = aero::testing::load_nrel5mw_deck();
-  Rotor qs(p);
-  p.unsteady_airfoil = UnsteadyAirfoilModel::hgm;
-  p.dynamic_inflow = DynamicInflowModel::oye;
-  Rotor r(p);
-  r.geometry = qs.geometry = RigidRotor{Vec3(0.0, 0.0, 90.0), 0.0, 5.0 * kDegree, 2.5 * kDegree, 1.5};
+  RotorPair pair;
+  Rotor& qs = pair.quasi_steady;
+  Rotor& r = pair.unsteady;
+  const Params& p = r.params;
   for (double wind : {8.0, 11.0, 16.0}) {
     const double pitch = wind > 11.4 ? 12.0 * kDegree : 0.0;
     const double dt = 0.02, period = 2.0 * kPi / r.omega;
@@ -206,12 +216,10 @@ TEST_CASE("DBEMT pitch step: induction relaxes with Oye's time constants", "[ver
 // Cost: one rotor evaluation (3 × 19 nodes) with UA + DBEMT against the quasi-steady one, and the
 // state update per step. A benchmark print, not a timed assertion (shared machine).
 TEST_CASE("cost of UA and DBEMT on a rotor evaluation", "[verification][aero]") {
-  Params p = aero::testing::load_nrel5mw_deck();
-  Rotor qs(p);
-  p.unsteady_airfoil = UnsteadyAirfoilModel::hgm;
-  p.dynamic_inflow = DynamicInflowModel::oye;
-  Rotor r(p);
-  qs.geometry = r.geometry = RigidRotor{Vec3(0.0, 0.0, 90.0), 0.0, 5.0 * kDegree, 2.5 * kDegree, 1.5};
+  RotorPair pair;
+  Rotor& qs = pair.quasi_steady;
+  Rotor& r = pair.unsteady;
+  const Params& p = r.params;
   r.place(0.0, 0.0, 11.0);
   evaluate(p, r.in, r.state, r.out);
   start_states(p, r.in, r.out, 0.0, r.state);

@@ -50,6 +50,7 @@ TEST_CASE("with potential flow the members carry drag only, A(∞) is the added 
   CHECK(b.excitation == in.wave_excitation);
   CHECK(a.excitation.norm() == 0.0);         // ignored without potential flow
   CHECK(b.radiation.norm() == 0.0);          // at rest since ever
+  // The total is the sum of the parts (no Morison, no radiation at rest): equal to rounding; 1e-9.
   CHECK((b.total - (b.buoyancy + b.added_linear + b.excitation)).norm() < 1e-9 * b.total.norm());
   // Drag stays: a surge velocity in still water meets ½ ρ C_d D |u| u over the wet length.
   in.fluid_acceleration_m_s2.setZero();
@@ -70,6 +71,8 @@ TEST_CASE("linear hydrostatics: ρ g V0 at rest, − C_hst q when displaced", "[
   validate(p);
   Hydro::Input in = make_input(p);
   const Hydro::State s = Hydro::make_state(p, in);
+  // The same products as the closed form, evaluated in the same order: equal to rounding (1e-15);
+  // the pitch moment passes through Euler angles of a rotation matrix (1e-12).
   const Hydro::Output rest = Hydro::outputs(p, in, s);
   CHECK(rest.buoyancy[2] == Approx(1025.0 * 9.80665 * 8029.21).epsilon(1e-15));
   CHECK(rest.buoyancy.norm() == Approx(rest.buoyancy[2]).epsilon(1e-15));
