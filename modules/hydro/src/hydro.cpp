@@ -168,14 +168,17 @@ Hydro::Output Hydro::outputs(const Params& params, const Input& in, const State&
   const double rho_g = params.water_density_kg_m3 * params.gravity_m_s2;
   const detail::PlatformMotion motion{in.platform.position_m, in.platform.velocity_m_s,
                                       in.platform.orientation * in.platform.angular_velocity_rad_s};
+  const bool nonlinear_hydrostatics = params.hydrostatics == Hydrostatics::nonlinear;
   SubmergedVolume displaced;
   int offset = 0;
   for (int m = 0; m < static_cast<int>(params.members.size()); ++m) {
     const MemberParams& member = params.members[m];
     const MemberGeometry g = place_member(member, motion.reference_m, in.platform.orientation);
-    const SubmergedVolume v = submerged_volume(g, 0.0, params.hydrostatic_quadrature_points);
-    displaced.volume_m3 += v.volume_m3;
-    displaced.first_moment_m4 += v.first_moment_m4;
+    if (nonlinear_hydrostatics) {
+      const SubmergedVolume v = submerged_volume(g, 0.0, params.hydrostatic_quadrature_points);
+      displaced.volume_m3 += v.volume_m3;
+      displaced.first_moment_m4 += v.first_moment_m4;
+    }
     const double surface_z = member_surface(params, in.surface_elevation_m, m);
     if (!std::isfinite(surface_z)) {
       throw NumericalError({"hydro", in.time_s, fmt::format("surface_elevation_m[{}]", m),
@@ -185,15 +188,19 @@ Hydro::Output Hydro::outputs(const Params& params, const Input& in, const State&
                                offset, motion, out.morison, out.added_mass);
     offset += member.strips + 2;
   }
-  // Buoyancy ρ g V k at the centre of buoyancy; its moment about r_ref is (r_B − r_ref) × F.
-  out.submerged_volume_m3 = displaced.volume_m3;
-  const Vec3 buoyancy(0.0, 0.0, rho_g * displaced.volume_m3);
-  out.buoyancy.head<3>() = buoyancy;
-  out.buoyancy.tail<3>() = (displaced.first_moment_m4 - displaced.volume_m3 * motion.reference_m).cross(
-      Vec3(0.0, 0.0, rho_g));
-  out.centre_of_buoyancy_m = displaced.volume_m3 > 0.0 ? Vec3(displaced.first_moment_m4 / displaced.volume_m3)
-                                                       : motion.reference_m;
-  if (params.hydrostatics == Hydrostatics::linear) out.buoyancy = linear_hydrostatic_load(params, in.platform);
+  if (nonlinear_hydrostatics) {
+    // Buoyancy ρ g V k at the centre of buoyancy; its moment about r_ref is (r_B − r_ref) × F.
+    out.submerged_volume_m3 = displaced.volume_m3;
+    out.buoyancy.head<3>() = Vec3(0.0, 0.0, rho_g * displaced.volume_m3);
+    out.buoyancy.tail<3>() = (displaced.first_moment_m4 - displaced.volume_m3 * motion.reference_m).cross(
+        Vec3(0.0, 0.0, rho_g));
+    out.centre_of_buoyancy_m = displaced.volume_m3 > 0.0 ? Vec3(displaced.first_moment_m4 / displaced.volume_m3)
+                                                         : motion.reference_m;
+  } else {
+    out.submerged_volume_m3 = params.displaced_volume_m3;
+    out.centre_of_buoyancy_m = motion.reference_m;
+    out.buoyancy = linear_hydrostatic_load(params, in.platform);
+  }
   out.added_linear = added_linear_load(params, in.platform, motion.angular_velocity);
   if (params.potential_flow) {
     const PotentialFlowParams& pf = *params.potential_flow;

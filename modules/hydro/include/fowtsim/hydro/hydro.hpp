@@ -65,8 +65,9 @@ struct Hydro {
     // potential flow) is [F; M] = −added_mass · [a_ref; α] (a_ref, α in g). For the solver's mass
     // matrix; not included in any load above.
     Mat6 added_mass = Mat6::Zero();   // [kg, kg·m, kg·m²]
-    double submerged_volume_m3 = 0.0;           // V below z = 0 [m³]
-    Vec3 centre_of_buoyancy_m = Vec3::Zero();   // in g [m]; r_ref when V = 0
+    double submerged_volume_m3 = 0.0;           // V below z = 0 [m³] (linear hydrostatics: V0)
+    Vec3 centre_of_buoyancy_m = Vec3::Zero();   // in g [m]; r_ref when V = 0 (linear hydrostatics:
+                                                //   r_ref, where ρ g V0 acts)
   };
 
   // The radiation memory at rest before input.time_s, the platform moving as input.platform then;
