@@ -1,23 +1,84 @@
 #pragma once
-// The glue code of the coupled scheme (seed 000 §4.4, DESIGN.md §4): a slow subsystem advanced
-// at the large step ΔT and a fast subsystem advanced at Δt = ΔT/n in the floating frame of its
-// attachment point. Weak coupling, no iteration:
-//   1. the slow subsystem advances over [T, T+ΔT] with the fast root loads averaged over the
-//      previous large step, applied at the averaged root position (zero-order hold);
-//   2. the fast subsystem takes n small steps through the slow attachment motion, linearly
-//      interpolated between T and T+ΔT, and its root loads are averaged over the large step:
-//      the time average of the piecewise-linear load history through the n+1 samples
-//      (trapezoidal weights ½, 1, …, 1, ½). A plain mean of the n end-of-substep samples would
-//      be biased by Δt/2·dF/dt and cap every mode at first order (measured);
-//   predictor_corrector: then the slow step is redone once from T with the new average.
+// The glue code of the coupled scheme (seed 000 §4.4, DESIGN.md §4), written once for every
+// scene: a slow subsystem advanced at the large step ΔT and a fast subsystem (or a group of fast
+// bodies) advanced at Δt = ΔT/n in the floating frame of its attachment. Weak coupling, no
+// iteration. Per large step [T, T + ΔT]:
+//   1. the slow subsystem advances with the fast root loads averaged over the previous large
+//      step, held over this one (zero-order hold);
+//   2. the fast subsystem takes n small steps through the slow attachment motion, interpolated
+//      between T and T + ΔT, and its root loads are averaged over the large step: the time average
+//      of the piecewise-linear load history through the n + 1 samples (trapezoidal weights
+//      ½, 1, …, 1, ½). A plain mean of the n end-of-substep samples would be biased by Δt/2·dF/dt
+//      and cap every mode at first order (measured, coupling_tests.cpp);
+//   3. predictor_corrector: the slow step is redone once from T with the new average;
+//      single_rate: n = 1.
+// The toy oscillators (`MultiRateScheduler`, verified against their exact solution) and the
+// floating turbine with flexible blades (scenes/turbine_blades.cpp) both run `multi_rate_step`,
+// so the toy's verification covers the turbine's exchange.
 // The modules check their own state inside advance (NumericalError names module and variable).
 #include <concepts>
+#include <optional>
 
 #include "coupling/coupling_mode.hpp"
 #include "fowtsim/core/interface.hpp"
 #include "fowtsim/core/module.hpp"
 
 namespace fowtsim::driver {
+
+enum class SlowPass { predictor, corrector };
+
+// The slow attachment motion over one large step, as small step i of n sees it.
+template <class Motion>
+struct SubstepMotion {
+  const Motion& begin;  // at T
+  const Motion& end;    // at T + ΔT
+  int i = 0, n = 1;
+  // At fraction x ∈ [0, 1] of small step i, i.e. (i + x)/n of the large step.
+  Motion at(double x) const { return interpolate(begin, end, (i + x) / n); }
+};
+
+// What a coupled pair gives the scheduler. `Load` averages as a vector (LoadAverager).
+template <class C>
+concept MultiRateCoupling =
+    requires(C& c, const C& cc, double t, double dt, const typename C::Load& load,
+             const SubstepMotion<typename C::Motion>& motion, const typename C::SlowState& saved) {
+      { c.slow_state() } -> std::convertible_to<typename C::SlowState>;  // copied for the corrector
+      c.restore_slow_state(saved);
+      { c.motion_at_step_start() } -> std::convertible_to<typename C::Motion>;
+      c.advance_slow(t, dt, SlowPass::predictor);  // with the held loads
+      { c.slow_motion(t) } -> std::convertible_to<typename C::Motion>;  // after advance_slow to t
+      c.advance_fast(t, dt, motion);               // one small step
+      { cc.root_loads() } -> std::convertible_to<typename C::Load>;  // of the fast side now
+      c.hold(load, dt);                            // the average over the large step dt
+      c.finish_large_step();
+    };
+
+// Advances a coupled pair by one large step from t (steps 1–3 of the header).
+template <MultiRateCoupling C>
+void multi_rate_step(C& c, const CouplingSettings& settings, double t) {
+  const double dt_large = settings.dt_coupling_s;
+  const int n = settings.substeps;
+  const double dt_small = dt_large / n;
+  const typename C::Motion begin = c.motion_at_step_start();
+  std::optional<typename C::SlowState> before;
+  if (settings.mode == CouplingMode::predictor_corrector) before.emplace(c.slow_state());
+
+  c.advance_slow(t, dt_large, SlowPass::predictor);
+  const typename C::Motion end = c.slow_motion(t + dt_large);
+  LoadAverager<typename C::Load> averager;
+  averager.add(c.root_loads(), 0.5);
+  for (int i = 0; i < n; ++i) {
+    c.advance_fast(t + i * dt_small, dt_small, SubstepMotion<typename C::Motion>{begin, end, i, n});
+    averager.add(c.root_loads(), i + 1 < n ? 1.0 : 0.5);
+  }
+  c.hold(averager.average(), dt_large);  // held over the next large step
+
+  if (before) {
+    c.restore_slow_state(*before);
+    c.advance_slow(t, dt_large, SlowPass::corrector);
+  }
+  c.finish_large_step();
+}
 
 // A slow subsystem takes interface loads and reports the motion of the attachment point.
 template <class S>
@@ -34,85 +95,87 @@ concept FastSubsystem = Module<F> && requires(typename F::Input u, typename F::O
   { y.root_loads } -> std::convertible_to<RootLoads>;
 };
 
+// Two modules of the module contract coupled by multi_rate_step (the toy oscillators).
 template <SlowSubsystem Slow, FastSubsystem Fast>
-class MultiRateScheduler {
+class ModulePair {
  public:
-  MultiRateScheduler(const typename Slow::Params& slow_params, const typename Fast::Params& fast_params,
-                     const CouplingSettings& settings)
+  using Motion = FrameMotion;
+  using Load = RootLoads;
+  using SlowState = typename Slow::State;
+
+  ModulePair(const typename Slow::Params& slow_params, const typename Fast::Params& fast_params)
       : slow_params_(slow_params),
         fast_params_(fast_params),
-        settings_(settings),
         slow_(Slow::make_state(slow_params)),
         fast_(Fast::make_state(fast_params)) {
-    validate(settings_);
     // Initial loads: the fast subsystem's root loads at t = 0 on a frame at rest where the slow
     // subsystem starts (no history to average yet).
-    slow_input_.interface_loads = RootLoads{};
-    const FrameMotion start = Slow::outputs(slow_params_, slow_input_, slow_).attachment;
+    const FrameMotion start = motion_at_step_start();
     fast_input_.frame_begin = start;
     fast_input_.frame_end = start;
-    last_root_loads_ = Fast::outputs(fast_params_, fast_input_, fast_).root_loads;
-    slow_input_.interface_loads = last_root_loads_;
+    root_loads_ = Fast::outputs(fast_params_, fast_input_, fast_).root_loads;
+    slow_input_.interface_loads = root_loads_;
   }
 
-  // Advances both subsystems by one large step ΔT.
-  void step() {
-    const double t = time_s();
-    const double dt_large = settings_.dt_coupling_s;
-    const FrameMotion motion_begin = Slow::outputs(slow_params_, slow_input_, slow_).attachment;
-    if (settings_.mode == CouplingMode::predictor_corrector) slow_before_step_ = slow_;
-
-    Slow::advance(slow_params_, slow_input_, t, dt_large, slow_);
-    const FrameMotion motion_end = Slow::outputs(slow_params_, slow_input_, slow_).attachment;
-    const RootLoads average = advance_fast(t, motion_begin, motion_end);
-
-    if (settings_.mode == CouplingMode::predictor_corrector) {
-      slow_ = slow_before_step_;
-      slow_input_.interface_loads = average;
-      Slow::advance(slow_params_, slow_input_, t, dt_large, slow_);
-    }
-    slow_input_.interface_loads = average;  // held over the next large step
-    ++large_step_;
+  const SlowState& slow_state() const { return slow_; }
+  void restore_slow_state(const SlowState& saved) { slow_ = saved; }
+  FrameMotion motion_at_step_start() const { return slow_output().attachment; }
+  void advance_slow(double t, double dt, SlowPass) { Slow::advance(slow_params_, slow_input_, t, dt, slow_); }
+  FrameMotion slow_motion(double) const { return slow_output().attachment; }
+  void advance_fast(double t, double dt, const SubstepMotion<FrameMotion>& slow) {
+    fast_input_.frame_begin = slow.i == 0 ? slow.begin : fast_input_.frame_end;
+    fast_input_.frame_end = slow.at(1.0);
+    Fast::advance(fast_params_, fast_input_, t, dt, fast_);
+    root_loads_ = Fast::outputs(fast_params_, fast_input_, fast_).root_loads;
   }
+  const RootLoads& root_loads() const { return root_loads_; }
+  void hold(const RootLoads& average, double) { slow_input_.interface_loads = average; }
+  void finish_large_step() {}
 
-  double time_s() const { return static_cast<double>(large_step_) * settings_.dt_coupling_s; }
-  long large_step() const { return large_step_; }
-  const CouplingSettings& settings() const { return settings_; }
-  const typename Slow::State& slow_state() const { return slow_; }
   const typename Fast::State& fast_state() const { return fast_; }
   // Outputs at the current time; the slow side reports the loads it will apply next.
   typename Slow::Output slow_output() const { return Slow::outputs(slow_params_, slow_input_, slow_); }
   typename Fast::Output fast_output() const { return Fast::outputs(fast_params_, fast_input_, fast_); }
 
  private:
-  // n small steps of the fast subsystem through the interpolated frame motion; returns the
-  // root loads averaged over the small steps (seed 000 §4.4.2).
-  RootLoads advance_fast(double t, const FrameMotion& begin, const FrameMotion& end) {
-    const int n = settings_.substeps;
-    const double dt_small = settings_.dt_coupling_s / n;
-    averager_.reset();
-    averager_.add(last_root_loads_, 0.5);
-    fast_input_.frame_end = begin;
-    for (int i = 0; i < n; ++i) {
-      fast_input_.frame_begin = fast_input_.frame_end;
-      fast_input_.frame_end = interpolate(begin, end, static_cast<double>(i + 1) / n);
-      Fast::advance(fast_params_, fast_input_, t + i * dt_small, dt_small, fast_);
-      last_root_loads_ = Fast::outputs(fast_params_, fast_input_, fast_).root_loads;
-      averager_.add(last_root_loads_, i + 1 < n ? 1.0 : 0.5);
-    }
-    return averager_.average();
-  }
-
-  typename Slow::Params slow_params_;  // copied once: the scheduler never refers to a caller's object
+  typename Slow::Params slow_params_;  // copied once: never refers to a caller's object
   typename Fast::Params fast_params_;
-  CouplingSettings settings_;
   typename Slow::State slow_;
-  typename Slow::State slow_before_step_;  // predictor-corrector rollback point
   typename Fast::State fast_;
   typename Slow::Input slow_input_{};
   typename Fast::Input fast_input_{};
-  RootLoadAverager averager_;
-  RootLoads last_root_loads_;  // fast root loads at the current time (first sample of a step)
+  RootLoads root_loads_;  // fast root loads at the current time (first sample of a step)
+};
+
+// A module pair, its coupling settings and the large-step count.
+template <SlowSubsystem Slow, FastSubsystem Fast>
+class MultiRateScheduler {
+ public:
+  MultiRateScheduler(const typename Slow::Params& slow_params, const typename Fast::Params& fast_params,
+                     const CouplingSettings& settings)
+      : settings_(validated(settings)), pair_(slow_params, fast_params) {}
+
+  // Advances both subsystems by one large step ΔT.
+  void step() {
+    multi_rate_step(pair_, settings_, time_s());
+    ++large_step_;
+  }
+
+  double time_s() const { return static_cast<double>(large_step_) * settings_.dt_coupling_s; }
+  long large_step() const { return large_step_; }
+  const CouplingSettings& settings() const { return settings_; }
+  const typename Slow::State& slow_state() const { return pair_.slow_state(); }
+  const typename Fast::State& fast_state() const { return pair_.fast_state(); }
+  typename Slow::Output slow_output() const { return pair_.slow_output(); }
+  typename Fast::Output fast_output() const { return pair_.fast_output(); }
+
+ private:
+  static const CouplingSettings& validated(const CouplingSettings& settings) {
+    validate(settings);
+    return settings;
+  }
+  CouplingSettings settings_;
+  ModulePair<Slow, Fast> pair_;
   long large_step_ = 0;
 };
 

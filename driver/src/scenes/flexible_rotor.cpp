@@ -347,21 +347,10 @@ void FlexibleRotor::checkpoint(Archive& a) {
 template void FlexibleRotor::checkpoint(CheckpointWriter&);
 template void FlexibleRotor::checkpoint(CheckpointReader&);
 
-FlexibleRotor::HubLoad FlexibleRotor::advance(double t, double dt_large, int substeps, const ShaftMotion& begin,
-                                              const ShaftMotion& end, const RotorDemands& demands) {
-  const double dt = dt_large / substeps;
-  const double balance = steppers_[0]->input_time_fraction();
-  HubLoad sum{0.5 * last_.force_h_N, 0.5 * last_.moment_h_N_m};
-  for (int i = 0; i < substeps; ++i) {
-    const ShaftMotion at_balance = interpolate(begin, end, (i + balance) / substeps);
-    step(t + i * dt, dt, at_balance, demands, i == 0 || params_.induction_every_small_step);
-    shaft_ = interpolate(begin, end, static_cast<double>(i + 1) / substeps);
-    last_ = root_loads(shaft_);
-    const double w = i + 1 < substeps ? 1.0 : 0.5;
-    sum.force_h_N += w * last_.force_h_N;
-    sum.moment_h_N_m += w * last_.moment_h_N_m;
-  }
-  return {sum.force_h_N / substeps, sum.moment_h_N_m / substeps};
+void FlexibleRotor::advance(double t, double dt, const SubstepMotion<ShaftMotion>& slow, const RotorDemands& demands) {
+  step(t, dt, slow.at(steppers_[0]->input_time_fraction()), demands, slow.i == 0 || params_.induction_every_small_step);
+  shaft_ = slow.at(1.0);
+  last_ = root_loads(shaft_);
 }
 
 }  // namespace fowtsim::driver

@@ -21,6 +21,7 @@
 #include <memory>
 #include <vector>
 
+#include "coupling/multi_rate_scheduler.hpp"
 #include "fowtsim/beam/beam_model.hpp"
 #include "fowtsim/beam/beam_outputs.hpp"
 #include "fowtsim/beam/beam_state.hpp"
@@ -124,17 +125,23 @@ class FlexibleRotor {
   void start(const ShaftMotion& shaft, double azimuth_rad, double rotor_speed_rad_s, double pitch_rad,
              const RotorDemands& demands, Start how);
 
-  // n small steps from t to t + ΔT through the shaft motion interpolated between `begin` and
-  // `end`. Returns the blades' root loads on the hub averaged over the step (trapezoidal weights
-  // on the n + 1 samples: the time average of the piecewise-linear history), as a force at the
-  // apex and a moment about it, in the hub frame h (kept in h so that the slow side turns it
-  // with the hub at every stage instead of letting it lag by Ω·ΔT).
+  // The blades' root loads on the hub, as a force at the apex and a moment about it, in the hub
+  // frame h (kept in h so that the slow side turns them with the hub at every stage instead of
+  // letting them lag by Ω·ΔT). The scheduler averages them over a large step.
   struct HubLoad {
     Vec3 force_h_N = Vec3::Zero();
     Vec3 moment_h_N_m = Vec3::Zero();
+    HubLoad& operator+=(const HubLoad& b) {
+      force_h_N += b.force_h_N;
+      moment_h_N_m += b.moment_h_N_m;
+      return *this;
+    }
+    friend HubLoad operator*(double w, const HubLoad& a) { return {w * a.force_h_N, w * a.moment_h_N_m}; }
   };
-  HubLoad advance(double t, double dt_large, int substeps, const ShaftMotion& begin, const ShaftMotion& end,
-                  const RotorDemands& demands);
+  // One small step from t to t + dt (small step `slow.i` of `slow.n`) through the shaft motion
+  // interpolated over the large step (coupling/multi_rate_scheduler.hpp). The inductions are
+  // solved at its first small step, or at every one (FlexibleRotorParams).
+  void advance(double t, double dt, const SubstepMotion<ShaftMotion>& slow, const RotorDemands& demands);
 
   // Root loads of all blades now (same form), the first sample of the next large step.
   HubLoad hub_load() const { return last_; }

@@ -162,29 +162,59 @@ void TurbineBlades::use_extrapolated_spin_profile(double t) {
                     s.generator_azimuth_rad, s.generator_speed_rad_s, mean_generator_acceleration_};
 }
 
+// The turbine as a pair for multi_rate_step: the multibody (slow) and the blades with the spin
+// (fast). The blades continue each large step from the shaft motion they ended the previous one
+// on (with predictor_corrector, the corrected multibody state is not sampled again at T).
+class TurbineBlades::Coupling {
+ public:
+  using Motion = ShaftMotion;
+  using Load = FlexibleRotor::HubLoad;
+  using SlowState = multibody::State;
+  Coupling(TurbineBlades& blades, multibody::LoadProvider& provider, const ShaftAt& shaft_at, const RotorDemands& demands,
+           multibody::State& state)
+      : b_(blades), provider_(provider), shaft_at_(shaft_at), demands_(demands), state_(state) {}
+
+  const multibody::State& slow_state() const { return state_; }
+  void restore_slow_state(const multibody::State& saved) { state_ = saved; }
+  ShaftMotion motion_at_step_start() const { return b_.rotor_.shaft(); }
+  // Predictor: the held root loads and the spin extrapolated from the blades'; corrector: the new
+  // average and the spin the blades took over the step.
+  void advance_slow(double t, double dt, SlowPass pass) {
+    if (pass == SlowPass::predictor) {
+      b_.use_extrapolated_spin_profile(t);
+      b_.spin_before_ = b_.rotor_.state().spin;
+    } else {
+      b_.use_step_spin_profile(t);
+    }
+    multibody::Multibody::advance(b_.model_, provider_, t, dt, state_);
+  }
+  ShaftMotion slow_motion(double t) const { return shaft_at_(t, state_); }
+  void advance_fast(double t, double dt, const SubstepMotion<ShaftMotion>& slow) { b_.rotor_.advance(t, dt, slow, demands_); }
+  FlexibleRotor::HubLoad root_loads() const { return b_.rotor_.hub_load(); }
+  void hold(const FlexibleRotor::HubLoad& average, double dt_large) {
+    const SpinState& after = b_.rotor_.state().spin;
+    b_.mean_rotor_acceleration_ = (after.rotor_speed_rad_s - b_.spin_before_.rotor_speed_rad_s) / dt_large;
+    b_.mean_generator_acceleration_ = (after.generator_speed_rad_s - b_.spin_before_.generator_speed_rad_s) / dt_large;
+    b_.held_ = average;
+  }
+  void finish_large_step() { b_.copy_spin(state_); }  // the blades own the spin
+
+ private:
+  TurbineBlades& b_;
+  multibody::LoadProvider& provider_;
+  const ShaftAt& shaft_at_;
+  const RotorDemands& demands_;
+  multibody::State& state_;
+};
+
 void TurbineBlades::advance(multibody::LoadProvider& provider, const ShaftAt& shaft_at, const RotorDemands& demands,
                             double t, double dt_large, multibody::State& state) {
-  const ShaftMotion begin = rotor_.shaft();
-  const multibody::State before = state;
-  // 1. The multibody with the held root loads and the spin extrapolated from the blades'.
-  use_extrapolated_spin_profile(t);
-  multibody::Multibody::advance(model_, provider, t, dt_large, state);
-  // 2. The blades and the spin through the interpolated shaft motion.
-  const SpinState spin_before = rotor_.state().spin;
-  const FlexibleRotor::HubLoad average = rotor_.advance(t, dt_large, substeps_, begin, shaft_at(t + dt_large, state), demands);
-  const SpinState& after = rotor_.state().spin;
-  mean_rotor_acceleration_ = (after.rotor_speed_rad_s - spin_before.rotor_speed_rad_s) / dt_large;
-  mean_generator_acceleration_ = (after.generator_speed_rad_s - spin_before.generator_speed_rad_s) / dt_large;
-  spin_before_ = spin_before;
-  held_ = average;
-  // 3. The corrector: the multibody step again with the new average and the spin the blades took.
-  if (mode_ == CouplingMode::predictor_corrector) {
-    state = before;
-    use_step_spin_profile(t);
-    multibody::Multibody::advance(model_, provider, t, dt_large, state);
-  }
-  // 4. The blades own the spin.
-  copy_spin(state);
+  Coupling coupling(*this, provider, shaft_at, demands, state);
+  CouplingSettings settings;
+  settings.mode = mode_;
+  settings.dt_coupling_s = dt_large;
+  settings.substeps = substeps_;
+  multi_rate_step(coupling, settings, t);
 }
 
 void TurbineBlades::use_step_spin_profile(double t) {

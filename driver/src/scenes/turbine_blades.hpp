@@ -3,13 +3,13 @@
 // glue between the rigid multibody (large step ΔT) and the fast side (FlexibleRotor: blades,
 // their aerodynamics and the rotor spin at Δt = ΔT/n), seed 000 §4.4 and DESIGN.md §4.
 //
-// Per large step [T, T + ΔT]:
+// Per large step [T, T + ΔT], the one multi-rate exchange (coupling/multi_rate_scheduler.hpp):
 //  1. the multibody advances with the blades' root loads averaged over the previous large step,
 //     held in the hub frame h and turned with the hub at every RK stage, and with the rotor spin
 //     prescribed: extrapolated from the fast side's spin at T with its mean acceleration over the
 //     previous large step (the multibody never integrates the spin: DESIGN.md §4);
 //  2. the fast side takes n small steps through the shaft motion interpolated between T and
-//     T + ΔT and returns its root loads averaged over the step (trapezoidal weights);
+//     T + ΔT; the scheduler averages its root loads over the step (trapezoidal weights);
 //  3. predictor_corrector: the multibody redoes the step from T with the new average and the
 //     spin the fast side computed; single_rate: n = 1;
 //  4. the multibody's spin is set to the fast side's at T + ΔT.
@@ -53,7 +53,7 @@ class TurbineBlades {
   // The spin the multibody takes at time t (quadratic from the held profile).
   multibody::SpinMotion spin(double t) const;
 
-  // One large step, steps 1–4 of the header. `provider` must apply add_stage_loads() and answer
+  // One large step, steps 1–4 of the header (multi_rate_step). `provider` must apply add_stage_loads() and answer
   // rotor_spin() with spin(); `shaft_at(t, state)` gives the shaft motion of a multibody state
   // under the provider's loads.
   using ShaftAt = std::function<ShaftMotion(double t, const multibody::State& state)>;
@@ -71,6 +71,7 @@ class TurbineBlades {
   std::string description() const;
 
  private:
+  class Coupling;  // this turbine as a MultiRateCoupling
   void use_step_spin_profile(double t);          // the spin the blades took over the step from t
   void use_extrapolated_spin_profile(double t);  // from the blades' spin at t, last step's mean acceleration
   void copy_spin(multibody::State& state) const;

@@ -2,6 +2,8 @@
 // The two quantities exchanged across the rigid–flexible interface of the coupled scheme
 // (seed 000 §4.4.1): the motion of the floating frame a flexible body is attached to, and the
 // loads that body returns at its root.
+#include <stdexcept>
+
 #include "fowtsim/core/types.hpp"
 
 namespace fowtsim {
@@ -28,19 +30,36 @@ struct RootLoads {
   Vec3 point_m = Vec3::Zero();      // application point (root position), in g [m]
 };
 
-// Weighted running average of root loads over the small steps of one large step (seed 000
+// Loads combine as vectors, field by field (LoadAverager).
+inline RootLoads& operator+=(RootLoads& a, const RootLoads& b) {
+  a.force_N += b.force_N;
+  a.moment_N_m += b.moment_N_m;
+  a.point_m += b.point_m;
+  return a;
+}
+inline RootLoads operator*(double w, const RootLoads& a) { return {w * a.force_N, w * a.moment_N_m, w * a.point_m}; }
+
+// Weighted running average of interface loads over the small steps of one large step (seed 000
 // §4.4.2: "averaged over each large time-step to apply at the averaged root positions"). With
 // weights ½, 1, …, 1, ½ on the n+1 samples of a large step it is the exact time average of the
-// piecewise-linear load history (trapezoidal rule).
-class RootLoadAverager {
+// piecewise-linear load history (trapezoidal rule). `Load` has `+=` and `double * Load`.
+template <class Load>
+class LoadAverager {
  public:
-  void add(const RootLoads& loads, double weight = 1.0);
-  RootLoads average() const;  // throws std::logic_error when nothing was added
-  void reset() { sum_ = RootLoads{}; weight_ = 0.0; }
+  void add(const Load& loads, double weight = 1.0) {
+    if (weight_ == 0.0) sum_ = weight * loads;
+    else sum_ += weight * loads;
+    weight_ += weight;
+  }
+  Load average() const {  // throws std::logic_error when nothing was added
+    if (!(weight_ > 0.0)) throw std::logic_error("LoadAverager::average() with no samples");
+    return (1.0 / weight_) * sum_;
+  }
+  void reset() { weight_ = 0.0; }
   double total_weight() const { return weight_; }
 
  private:
-  RootLoads sum_;
+  Load sum_{};
   double weight_ = 0.0;
 };
 
