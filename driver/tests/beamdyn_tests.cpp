@@ -7,7 +7,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "beamdyn/beamdyn_comparison.hpp"
+#include "verify/beamdyn_comparison.hpp"
 #include "beamdyn/beamdyn_setup.hpp"
 #include "fowtsim/beam/modal.hpp"
 #include "fowtsim/io/readers.hpp"

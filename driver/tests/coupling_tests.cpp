@@ -5,7 +5,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "coupling/coupling_study.hpp"
+#include "verify/coupling_study.hpp"
 #include "coupling/multi_rate_scheduler.hpp"
 #include "fowtsim/core/error.hpp"
 

@@ -7,8 +7,8 @@
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
-#include "cli/verify_cases.hpp"
-#include "cli/verify_turbine.hpp"
+#include "verify/verify_cases.hpp"
+#include "verify/verify_turbine.hpp"
 #include "compare/window_statistics.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "fowtsim/testing/skip.hpp"

@@ -6,8 +6,8 @@
 // series correlated above 0.999 and within 5 % RMS.
 #include <catch2/catch.hpp>
 
-#include "cli/verify_cases.hpp"
-#include "cli/verify_turbine.hpp"
+#include "verify/verify_cases.hpp"
+#include "verify/verify_turbine.hpp"
 #include "fowtsim/testing/skip.hpp"
 
 using namespace fowtsim;

@@ -16,8 +16,8 @@
 #include <catch2/catch.hpp>
 #include <hdf5.h>
 
-#include "cli/turbulence_command.hpp"
-#include "cli/verify_cases.hpp"
+#include "run/turbulence_command.hpp"
+#include "verify/verify_cases.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "fowtsim/testing/skip.hpp"

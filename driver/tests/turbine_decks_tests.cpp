@@ -5,7 +5,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "cli/turbulence_command.hpp"
+#include "run/turbulence_command.hpp"
 #include "decks/aero_deck.hpp"
 #include "decks/beam_deck.hpp"
 #include "fowtsim/core/error.hpp"

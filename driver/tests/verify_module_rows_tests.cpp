@@ -9,7 +9,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "cli/verify_cases.hpp"
+#include "verify/verify_cases.hpp"
 #include "fowtsim/testing/skip.hpp"
 
 using namespace fowtsim;

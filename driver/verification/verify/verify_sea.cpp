@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/reports.hpp"
+#include "verify/reports.hpp"
 #include "fowtsim/core/rotation.hpp"
 #include "fowtsim/hydro/benchmarks.hpp"
 #include "fowtsim/hydro/oc3.hpp"

@@ -1,4 +1,4 @@
-#include "cli/verify_turbine.hpp"
+#include "verify/verify_turbine.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/verify_cases.hpp"
+#include "verify/verify_cases.hpp"
 #include "compare/window_statistics.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "run/run_scene.hpp"

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "cli/reports.hpp"
+#include "verify/reports.hpp"
 
 namespace fowtsim::driver {
 

@@ -11,8 +11,8 @@
 
 #include <fmt/format.h>
 
-#include "cli/verify_cases.hpp"
-#include "cli/verify_modules.hpp"
+#include "verify/verify_cases.hpp"
+#include "verify/verify_modules.hpp"
 #include "decks/aero_deck.hpp"
 #include "fowtsim/aero/verification.hpp"
 #include "fowtsim/io/readers.hpp"

@@ -9,8 +9,8 @@
 #include <fmt/format.h>
 
 #include "cli/progress_bar.hpp"
-#include "cli/reports.hpp"
-#include "cli/verify_cases.hpp"
+#include "verify/reports.hpp"
+#include "verify/verify_cases.hpp"
 #include "compare/channel_compare.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/version.hpp"
@@ -18,7 +18,7 @@
 #include "run/interrupt.hpp"
 #include "run/option_checks.hpp"
 #include "run/run_scene.hpp"
-#include "cli/turbulence_command.hpp"
+#include "run/turbulence_command.hpp"
 #include "cli/post_command.hpp"
 #include "cli/post_config.hpp"
 #include "cli/sweep_command.hpp"

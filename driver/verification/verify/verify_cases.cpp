@@ -1,6 +1,6 @@
-#include "cli/verify_turbine.hpp"
-#include "cli/verify_cases.hpp"
-#include "cli/verify_modules.hpp"
+#include "verify/verify_turbine.hpp"
+#include "verify/verify_cases.hpp"
+#include "verify/verify_modules.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "coupling/coupling_study.hpp"
+#include "verify/coupling_study.hpp"
 #include "fowtsim/core/error.hpp"
 
 namespace fowtsim::driver {

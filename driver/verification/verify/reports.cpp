@@ -1,4 +1,4 @@
-#include "cli/reports.hpp"
+#include "verify/reports.hpp"
 
 #include <cmath>
 

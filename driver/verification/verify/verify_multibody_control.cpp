@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/verify_modules.hpp"
+#include "verify/verify_modules.hpp"
 #include "fowtsim/control/presets.hpp"
 #include "fowtsim/control/verification.hpp"
 #include "fowtsim/multibody/model.hpp"

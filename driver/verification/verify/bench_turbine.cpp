@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/reports.hpp"
+#include "verify/reports.hpp"
 #include "decks/aero_deck.hpp"
 #include "fowtsim/aero/benchmarks.hpp"
 #include "fowtsim/control/benchmark.hpp"

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/reports.hpp"
+#include "verify/reports.hpp"
 
 namespace fowtsim::driver {
 

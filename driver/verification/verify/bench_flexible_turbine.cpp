@@ -16,7 +16,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/turbulence_command.hpp"
+#include "run/turbulence_command.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "run/run_scene.hpp"
 

@@ -1,4 +1,4 @@
-#include "beamdyn/beamdyn_comparison.hpp"
+#include "verify/beamdyn_comparison.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "cli/turbulence_command.hpp"
+#include "run/turbulence_command.hpp"
 
 #include <chrono>
 

@@ -1,4 +1,4 @@
-#include "coupling/coupling_study.hpp"
+#include "verify/coupling_study.hpp"
 
 #include <cmath>
 

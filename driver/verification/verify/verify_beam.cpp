@@ -7,9 +7,9 @@
 
 #include <fmt/format.h>
 
-#include "beamdyn/beamdyn_comparison.hpp"
+#include "verify/beamdyn_comparison.hpp"
 #include "beamdyn/beamdyn_setup.hpp"
-#include "cli/verify_cases.hpp"
+#include "verify/verify_cases.hpp"
 #include "fowtsim/beam/benchmarks.hpp"
 #include "fowtsim/beam/modal.hpp"
 #include "fowtsim/beam/solvers.hpp"

@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "cli/verify_cases.hpp"
-#include "coupling/coupling_study.hpp"
+#include "verify/verify_cases.hpp"
+#include "verify/coupling_study.hpp"
 
 namespace fowtsim::driver {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "cli/reports.hpp"
+#include "verify/reports.hpp"
 
 namespace fowtsim::driver {
 
