@@ -1,15 +1,22 @@
-// The YAML beam scene (our own beam deck format): the shipped roll-up deck closes its circle, and
-// bad beam decks stop before the run with file, line and key.
+// The YAML beam scene (our own beam deck format): the shipped roll-up deck closes its circle, bad
+// beam decks stop before the run with file, line and key, and single-beam runs (beam decks and
+// BeamDyn cases) go through the common time loop with BeamDyn's rows.
 #include <cmath>
 #include <fstream>
 
 #include <catch2/catch.hpp>
 
+#include "beamdyn/beamdyn_channels.hpp"
+#include "beamdyn/beamdyn_run.hpp"
+#include "beamdyn/beamdyn_setup.hpp"
+#include "decks/beam_deck.hpp"
+#include "fowtsim/beam/beam_outputs.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
 #include "run_request.hpp"
+#include "scenes/beam_scene.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -77,4 +84,50 @@ TEST_CASE("OpenFAST channel names carry the same loads and deflections in their 
   CHECK(std::abs(last("RootMxb1") - pi / 1000.0) < 1e-11);
   CHECK(last("B1RootMxr") == last("RootMxr"));
   CHECK(last("TipDyb1") == last("TipTDyr"));
+}
+
+TEST_CASE("a static beam run writes BeamDyn's ten rows: undeformed at t0, then the solution", "[unit][beam_scene]") {
+  const auto dir = testing::scratch_dir("beam_scene_static_rows");
+  RunRequest r = run_request(testing::source_dir() / "inputs/beams/rollup.yaml", dir / "run", std::string("h5"));
+  r.beam_segments = 10;
+  const RunReport report = run_scene(r, nullptr);
+  CHECK(report.large_steps == 1);  // one static solve
+  const io::ChannelTable t = io::read_hdf5_channels(dir / "run.h5");
+  REQUIRE(t.rows() == 10);
+  const std::vector<double>& moment = t.columns[*t.find("RootMxr")];
+  CHECK(moment[0] == 0.0);
+  for (std::size_t k = 1; k < t.rows(); ++k) {
+    CHECK(t.time()[k] == static_cast<double>(k) * 0.005);  // the deck's default dt_s
+    CHECK(moment[k] == moment[1]);
+  }
+  CHECK(std::abs(moment[1] - 4.0 * 3.14159265358979323846) < 1e-8);
+}
+
+TEST_CASE("a dynamic beam run from t0 > 0 writes the states of stepping the beam by hand", "[unit][beam_scene]") {
+  const auto dir = testing::scratch_dir("beam_scene_dynamic_rows");
+  const io::ValidatedDeck deck = io::read_deck(beam_scene_schema(), testing::source_dir() / "inputs/beams/rollup.yaml");
+  BeamDynSetup setup{.definition = beam_definition(deck, "beam")};
+  setup.gravity_m_s2 = Vec3(9.81, 0.0, 0.0);
+  setup.angular_velocity_rad_s = Vec3(0.0, 0.0, 1.0);
+  setup.dynamic = true;
+  setup.t_initial_s = 1.0;
+  setup.t_final_s = 1.02;
+  setup.dt_s = 0.005;
+  SingleBeamRun how;
+  how.segments = 8;
+  how.decimation = 2;
+  run_single_beam(setup, how, run_request(dir / "hand_built", dir / "run", std::string("h5")), nullptr);
+
+  const beam::BeamModel model = beam::discretise(setup.definition, how.segments);
+  beam::DynamicStepper stepper(model, beam::DynamicOptions{});
+  beam::BeamState state = beam::make_state(model);
+  beam::BeamInput input;
+  for (long k = 0; k < 4; ++k) step_beamdyn(setup, model, stepper, 1.0 + k * 0.005, 0.005, input, state);
+  std::vector<double> values;
+  beamdyn_channel_values(model, beam::beam_outputs(model, state), values);
+
+  const io::ChannelTable t = io::read_hdf5_channels(dir / "run.h5");
+  CHECK(t.time() == std::vector<double>{1.0, 1.0 + 2 * 0.005, 1.0 + 4 * 0.005});
+  REQUIRE(t.columns.size() == values.size() + 1);
+  for (std::size_t c = 0; c < values.size(); ++c) CHECK(t.columns[c + 1].back() == values[c]);
 }

@@ -344,6 +344,21 @@ TEST_CASE("SIGINT stops the BeamDyn time loop too", "[verification][run]") {
   CHECK(io::read_hdf5_channels(dir / "run.h5").rows() == 4);
 }
 
+TEST_CASE("SIGINT stops the toy scene (the common time loop) after the step", "[unit][run]") {
+  const auto dir = testing::scratch_dir("guard_sigint_toy");
+  const InterruptHandlers handlers;
+  int calls = 0;
+  const RunReport report = run_scene(run_request(toy_deck(dir), dir / "run", std::string("h5")), [&](double, double) {
+    if (++calls == 3) std::raise(SIGINT);
+  });
+  clear_interrupt();  // the flag outlives the handlers: later runs in this process must not stop
+  CHECK(report.interrupted_by == SIGINT);
+  CHECK(report.large_steps == 3);
+  CHECK(report.t_max_s == 1.0);
+  CHECK_THAT(string_attribute(dir / "run.h5", "status"), Catch::StartsWith("interrupted at t = 0.3 s") && Catch::Contains("SIGINT"));
+  CHECK(io::read_hdf5_channels(dir / "run.h5").time() == std::vector<double>{0.0, 0.1, 2 * 0.1, 3 * 0.1});
+}
+
 TEST_CASE("fowtsim run exits 130 on SIGINT with the summary printed", "[unit][run]") {
   const auto dir = testing::scratch_dir("guard_sigint_exe");
   const auto exe = fowtsim_exe();

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <cmath>
 #include <fstream>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -13,20 +13,20 @@
 #include "fowtsim/beam/beam_outputs.hpp"
 #include "fowtsim/beam/solvers.hpp"
 #include "fowtsim/core/error.hpp"
-#include "fowtsim/core/version.hpp"
-#include "run/interrupt.hpp"
-#include "run/output_set.hpp"
+#include "scenes/scene_runner.hpp"
 
 namespace fowtsim::driver {
 namespace {
 
 // BeamDyn's static driver writes the undeformed row at t0 and the converged solution at the next
 // nine steps (t0 + dt … t0 + 9 dt); we write the same rows.
-constexpr int kStaticRows = 9;
+constexpr long kStaticRows = 9;
 
-// Static solve with BeamDyn's load-bisection fallback: all load at once, then halving the load
-// increment (doubling the load steps) when the iteration fails.
-void solve_static_robustly(const beam::BeamModel& model, const beam::BeamInput& input, beam::BeamState& state) {
+// Static solve under the case's loads at t, with BeamDyn's load-bisection fallback: all load at
+// once, then halving the load increment (doubling the load steps) when the iteration fails.
+void solve_static_robustly(const BeamDynSetup& setup, const beam::BeamModel& model, double t_s, beam::BeamInput& input,
+                           beam::BeamState& state) {
+  beamdyn_input(setup, model, state, t_s, input);
   const beam::BeamState start = state;
   for (int steps = 1;; steps *= 2) {
     beam::StaticOptions opt;
@@ -62,6 +62,12 @@ RunReport run_beamdyn_case(const RunRequest& request, const ProgressCallback& pr
   return run_single_beam(setup, how, request, progress);
 }
 
+void step_beamdyn(const BeamDynSetup& setup, const beam::BeamModel& model, beam::DynamicStepper& stepper, double t_s,
+                  double dt_s, beam::BeamInput& input, beam::BeamState& state) {
+  beamdyn_input(setup, model, state, t_s + stepper.input_time_fraction() * dt_s, input);
+  stepper.step(input, dt_s, state);
+}
+
 RunReport run_single_beam(const BeamDynSetup& setup_in, const SingleBeamRun& how, const RunRequest& request,
                           const ProgressCallback& progress) {
   BeamDynSetup setup = setup_in;
@@ -69,94 +75,75 @@ RunReport run_single_beam(const BeamDynSetup& setup_in, const SingleBeamRun& how
   if (request.dt_s) setup.dt_s = *request.dt_s;
   const beam::BeamModel model = beam::discretise(setup.definition, how.segments);
 
-  RunReport report;
-  report.coupling = "beam only";
+  std::vector<std::string> channel_warnings;
   const auto all = beamdyn_channels();
   std::vector<std::size_t> picked;
   for (const std::string& name : how.channels) {
     if (const auto i = find_beamdyn_channel(name)) {
       picked.push_back(*i);
     } else if (how.skip_unknown_channels) {
-      report.warnings.push_back(fmt::format("BeamDyn channel '{}' is not available and is not written", name));
+      channel_warnings.push_back(fmt::format("BeamDyn channel '{}' is not available and is not written", name));
     } else {
       throw InputError({"beam", std::nullopt, name, ""}, fmt::format("unknown beam channel '{}'", name));
     }
   }
   if (how.channels.empty())
     for (std::size_t i = 0; i < all.size(); ++i) picked.push_back(i);
-  std::vector<ChannelInfo> written;
-  for (std::size_t i : picked) written.push_back(all[i]);
 
-  const long steps = setup.dynamic ? std::lround((setup.t_final_s - setup.t_initial_s) / setup.dt_s) : 0;
-  OutputSet outputs(request.output_base.value_or(std::filesystem::path("runs") / request.deck_path.stem()),
-                    request.output_format.value_or("h5"));
-  report.outputs = outputs.paths();
-  report.t_max_s = setup.t_final_s;
-  io::RunMetadata metadata;
-  metadata.version = kVersion;
-  metadata.deck_path = request.deck_path.string();
-  metadata.deck_hash = how.deck_hash;
-  metadata.dt_s = setup.dt_s;
-  metadata.dt_coupling_s = setup.dt_s;
+  FixedStepPlan plan;
+  plan.t0_s = setup.t_initial_s;
+  plan.dt_s = setup.dt_s;
+  // A static analysis is one solve in the first of the kStaticRows steps.
+  plan.steps = setup.dynamic ? std::lround((setup.t_final_s - setup.t_initial_s) / setup.dt_s) : kStaticRows;
+  plan.t_max_s = setup.t_final_s;
+  plan.format = request.output_format.value_or("h5");
+  plan.decimation = setup.dynamic ? how.decimation : 1;  // BeamDyn's static rows are all written
+  plan.base = request.output_base.value_or(std::filesystem::path("runs") / request.deck_path.stem());
+  plan.deck_hash = how.deck_hash;
+
+  FixedStepScene scene;
+  for (std::size_t i : picked) scene.written.push_back(all[i]);
+  scene.metadata.deck_path = request.deck_path.string();
+  scene.metadata.deck_hash = how.deck_hash;
+  scene.metadata.dt_s = setup.dt_s;
+  scene.metadata.dt_coupling_s = setup.dt_s;
   beam::DynamicOptions options;
   options.integrator = beam::integrator_from_name(how.integrator);
   options.spectral_radius = setup.spectral_radius;
   options.matrix_max_age = how.matrix_max_age;
-  metadata.extra = {{"scene", how.scene},
-                    {"beam_segments", std::to_string(how.segments)},
-                    {"beam_integrator", beam::integrator_name(options.integrator)},
-                    {"beam_matrix_max_age", std::to_string(options.matrix_max_age)}};
-  outputs.begin(written, metadata);
+  scene.metadata.extra = {{"scene", how.scene},
+                          {"beam_segments", std::to_string(how.segments)},
+                          {"beam_integrator", beam::integrator_name(options.integrator)},
+                          {"beam_matrix_max_age", std::to_string(options.matrix_max_age)}};
 
   beam::BeamState state = beam::make_state(model);
   beam::BeamInput input;
-  std::vector<double> row(picked.size()), values;
+  std::vector<double> values;
   values.reserve(all.size());
-  auto write_row = [&](double t, bool zero_loads) {
+  bool solved = setup.dynamic;  // a static run's row at t0 shows BeamDyn's state before any solve
+  scene.row = [&](double, std::span<double> row) {
     beam::BeamOutputs out = beam::beam_outputs(model, state);
-    if (zero_loads) out.root_load.setZero();  // BeamDyn's t0 row before any solve
+    if (!solved) out.root_load.setZero();
     beamdyn_channel_values(model, out, values);
     for (std::size_t k = 0; k < picked.size(); ++k) row[k] = values[picked[k]];
-    outputs.append(t, row);
   };
-
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  double t = setup.t_initial_s;
-  try {
-    if (!setup.dynamic) {
-      write_row(t, true);
-      beamdyn_input(setup, model, state, t, input);
-      solve_static_robustly(model, input, state);
-      for (int k = 1; k <= kStaticRows; ++k) write_row(setup.t_initial_s + k * setup.dt_s, false);
-      t = setup.t_initial_s + kStaticRows * setup.dt_s;
-      report.large_steps = 1;
-    } else {
-      if (setup.quasi_static_init) {
-        beamdyn_input(setup, model, state, t, input);
-        solve_static_robustly(model, input, state);
-      }
-      write_row(t, false);
-      beam::DynamicStepper stepper(model, options);
-      long k = 1;
-      for (; k <= steps && interrupt_signal() == 0; ++k) {  // a signal stops the run at the end of a step
-        const double t0 = setup.t_initial_s + (k - 1) * setup.dt_s;
-        beamdyn_input(setup, model, state, t0 + stepper.input_time_fraction() * setup.dt_s, input);
-        stepper.step(input, setup.dt_s, state);
-        t = setup.t_initial_s + k * setup.dt_s;
-        if (k % how.decimation == 0) write_row(t, false);
-        if (progress) progress(t, setup.t_final_s);
-      }
-      report.large_steps = k - 1;
-      if (k <= steps) report.interrupted_by = interrupt_signal();
-    }
-  } catch (const NumericalError& e) {
-    outputs.finish({elapsed(), std::string("failed: ") + e.what(), t, {}});
-    throw;
+  std::optional<beam::DynamicStepper> stepper;
+  if (setup.dynamic) {
+    if (setup.quasi_static_init) solve_static_robustly(setup, model, setup.t_initial_s, input, state);
+    stepper.emplace(model, options);
+    scene.step = [&](double t, double dt) { step_beamdyn(setup, model, *stepper, t, dt, input, state); };
+  } else {
+    scene.step = [&](double t, double) {
+      if (solved) return;  // the later static rows repeat the converged solution
+      solve_static_robustly(setup, model, t, input, state);
+      solved = true;
+    };
   }
-  report.wall_s = elapsed();
-  report.simulated_s = t;
-  outputs.finish({report.wall_s, report.interrupted_by ? interrupted_status(t, report.interrupted_by) : "completed", t, {}});
+  RunReport report = run_fixed_steps(request, plan, std::move(scene), progress);
+  report.coupling = "beam only";
+  if (!setup.dynamic) report.large_steps = 1;  // one static solve
+  // In the summary only, first, as the BeamDyn runs have always reported them.
+  report.warnings.insert(report.warnings.begin(), channel_warnings.begin(), channel_warnings.end());
   return report;
 }
 

@@ -27,7 +27,14 @@ struct SingleBeamRun {
   std::string scene;                  // recorded in the output metadata
   std::string deck_hash;
 };
+// Runs the beam through the common time loop (scenes/scene_runner.hpp): interruption by a
+// signal, failure handling; no checkpoints.
 RunReport run_single_beam(const BeamDynSetup& setup, const SingleBeamRun& how, const RunRequest& request,
                           const ProgressCallback& progress);
+
+// One dynamic step of a BeamDyn case from t to t + dt: the case's input at the stepper's input
+// time, then the step.
+void step_beamdyn(const BeamDynSetup& setup, const beam::BeamModel& model, beam::DynamicStepper& stepper, double t_s,
+                  double dt_s, beam::BeamInput& input, beam::BeamState& state);
 
 }  // namespace fowtsim::driver

@@ -1,9 +1,10 @@
 #pragma once
 // Interrupting a run with SIGINT (Ctrl-C) or SIGTERM. The handler only stores the signal number in
-// an atomic flag; the time loops (run_fixed_steps, the BeamDyn loop) read it after every step, stop
-// there, close the outputs with the status "interrupted at t = … s (SIGINT)" and return normally,
-// so the summary is printed and `fowtsim run` exits with 128 + signal (130 for SIGINT, 143 for
-// SIGTERM). A second signal of the same kind kills the process at once (SA_RESETHAND).
+// an atomic flag; the time loop (run_fixed_steps, which every run goes through) reads it after
+// every step, stops there, closes the outputs with the status "interrupted at t = … s (SIGINT)"
+// and returns normally, so the summary is printed and `fowtsim run` exits with 128 + signal (130
+// for SIGINT, 143 for SIGTERM). A second signal of the same kind kills the process at once
+// (SA_RESETHAND).
 // Header-only: the flag is one inline variable shared by every translation unit.
 #include <atomic>
 #include <csignal>

@@ -32,27 +32,46 @@ Schema output_schema() {
   });
 }
 
+FixedStepPlan output_plan(const RunRequest& request, const io::ValidatedDeck& deck) {
+  FixedStepPlan plan;
+  plan.format = request.output_format.value_or(deck.has("output") ? deck.string("output.format") : "h5");
+  plan.decimation = deck.has("output") ? deck.integer("output.decimation") : 1;
+  plan.base = request.output_base.value_or(std::filesystem::path("runs") / request.deck_path.stem());
+  plan.deck_hash = deck.hash();
+  return plan;
+}
+
 RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& deck, FixedStepScene scene,
                           const ProgressCallback& progress) {
-  const double t_max = request.t_max_s.value_or(deck.number("simulation.t_max_s"));
-  const double dt = deck.number("simulation.dt_s");
+  FixedStepPlan plan = output_plan(request, deck);
+  plan.t_max_s = request.t_max_s.value_or(deck.number("simulation.t_max_s"));
+  plan.dt_s = deck.number("simulation.dt_s");
+  const double t_max = plan.t_max_s, dt = plan.dt_s;
   if (request.dt_s)
     throw InputError({"scene", std::nullopt, "--dt", "simulation.dt_s in the deck"},
                      "--dt sets the time step of beam runs (BeamDyn driver inputs, beam decks); this scene's steps are "
                      "set in the deck (" + where(deck, "simulation.dt_s") + ")");
   // Every check before any file is opened: a failed start must not touch an earlier output.
-  const long steps = std::lround(t_max / dt);
-  if (steps < 1 || std::abs(static_cast<double>(steps) * dt - t_max) > 1e-9 * t_max) {
+  plan.steps = std::lround(t_max / dt);
+  if (plan.steps < 1 || std::abs(static_cast<double>(plan.steps) * dt - t_max) > 1e-9 * t_max) {
     const std::string culprit = request.t_max_s ? fmt::format("--tmax {:.10g}", t_max)
                                                 : fmt::format("simulation.t_max_s = {:.10g}", t_max);
     throw InputError({"scene", std::nullopt, request.t_max_s ? "--tmax" : "simulation.t_max_s",
-                      fmt::format("a multiple of dt_s = {:.10g} s, e.g. {:.10g}", dt, std::max(1L, steps) * dt)},
+                      fmt::format("a multiple of dt_s = {:.10g} s, e.g. {:.10g}", dt, std::max(1L, plan.steps) * dt)},
                      where(deck, "simulation.dt_s") + ": the time step must divide the simulated time (" + culprit +
                          " is not a whole number of steps of " + fmt::format("{:.10g}", dt) + " s)");
   }
-  const std::string format = request.output_format.value_or(deck.has("output") ? deck.string("output.format") : "h5");
-  const long decimation = deck.has("output") ? deck.integer("output.decimation") : 1;
-  const std::filesystem::path base = request.output_base.value_or(std::filesystem::path("runs") / request.deck_path.stem());
+  scene.metadata.deck_path = std::filesystem::absolute(request.deck_path).lexically_normal().string();
+  scene.metadata.deck_hash = deck.hash();
+  scene.metadata.dt_s = dt;
+  scene.metadata.dt_coupling_s = dt;
+  return run_fixed_steps(request, plan, std::move(scene), progress);
+}
+
+RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, FixedStepScene scene,
+                          const ProgressCallback& progress) {
+  const double dt = plan.dt_s;
+  const long steps = plan.steps;
   // Checkpoints (issue 16): <output>.chk every T, and a restart from one, both checked first.
   long checkpoint_steps = 0, k0 = 0;
   if ((request.checkpoint_every_s || request.restart_path) && !scene.save)
@@ -67,35 +86,31 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
   }
   if (request.restart_path) {
     std::ifstream is(*request.restart_path, std::ios::binary);
-    const CheckpointHeader header = read_checkpoint_header(is, *request.restart_path, deck.hash(), dt);
+    const CheckpointHeader header = read_checkpoint_header(is, *request.restart_path, plan.deck_hash, dt);
     if (header.step >= steps)
       throw InputError({"scene", std::nullopt, "--restart", "a checkpoint before the end of the run"},
                        fmt::format("{}: the checkpoint is at t = {:.10g} s, the run ends at {:.10g} s",
-                                   request.restart_path->string(), header.step * dt, t_max));
+                                   request.restart_path->string(), plan.t0_s + header.step * dt, plan.t_max_s));
     CheckpointReader reader(is, *request.restart_path);
     scene.load(reader);
     k0 = header.step;
   }
-  const std::filesystem::path checkpoint_file = base.string() + ".chk";
-  OutputSet outputs(base, format);
+  const std::filesystem::path checkpoint_file = plan.base.string() + ".chk";
+  OutputSet outputs(plan.base, plan.format);
   scene.metadata.version = kVersion;
-  scene.metadata.deck_path = std::filesystem::absolute(request.deck_path).lexically_normal().string();
-  scene.metadata.deck_hash = deck.hash();
-  scene.metadata.dt_s = dt;
-  scene.metadata.dt_coupling_s = dt;
   outputs.begin(scene.written, scene.metadata);
 
   RunReport report;
   // A run far outside sense still runs, but says so (e.g. dt 1e-12 s wrote 600 MB in 60 s).
-  const double rows = static_cast<double>(steps - k0) / static_cast<double>(decimation) + 1.0;
-  const double bytes = rows * static_cast<double>(scene.written.size() + 1) * (format == "both" ? 2.0 * 8.0 : 8.0);
+  const double rows = static_cast<double>(steps - k0) / static_cast<double>(plan.decimation) + 1.0;
+  const double bytes = rows * static_cast<double>(scene.written.size() + 1) * (plan.format == "both" ? 2.0 * 8.0 : 8.0);
   if (steps - k0 > 50'000'000L)
     report.warnings.push_back(fmt::format("{} steps of {:.3g} s: check simulation.dt_s", steps - k0, dt));
   if (bytes > 2e9)
     report.warnings.push_back(fmt::format("about {:.1f} GB of output: raise output.decimation or pick output.channels", bytes / 1e9));
   report.outputs = outputs.paths();
   if (checkpoint_steps > 0) report.outputs.push_back(checkpoint_file);
-  report.t_max_s = t_max;
+  report.t_max_s = plan.t_max_s;
   std::vector<double> row(scene.written.size());
   auto write_row = [&](double t) {
     scene.row(t, row);
@@ -104,17 +119,19 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   long k = k0;
-  double t = static_cast<double>(k) * dt;
+  // t0 + k·dt, not a running sum: every row time is exact to one rounding (and t0 = 0 adds none).
+  auto time_of = [&](long step) { return plan.t0_s + static_cast<double>(step) * dt; };
+  double t = time_of(k);
   try {
     write_row(t);
     while (k < steps && interrupt_signal() == 0) {  // a signal stops the run at the end of a step
       scene.step(t, dt);
       ++k;
-      t = static_cast<double>(k) * dt;
-      if (k % decimation == 0) write_row(t);
+      t = time_of(k);
+      if (k % plan.decimation == 0) write_row(t);
       if (checkpoint_steps > 0 && k % checkpoint_steps == 0)
-        write_checkpoint(checkpoint_file, {hash_field(deck.hash()), k, dt}, scene.save);
-      if (progress) progress(t, t_max);
+        write_checkpoint(checkpoint_file, {hash_field(plan.deck_hash), k, dt}, scene.save);
+      if (progress) progress(t, plan.t_max_s);
     }
   } catch (const std::exception& e) {  // numerical trouble, or a failing external controller
     outputs.finish({elapsed(), std::string("failed: ") + e.what(), t, {}});

@@ -1,8 +1,12 @@
 #pragma once
-// What the fixed-step scenes share: the `simulation` and `output` deck sections and the time loop
-// that writes rows, reports progress and keeps every row written so far when a step fails.
+// The one production time loop of fowtsim (every scene and the BeamDyn driver cases run through
+// it), and the `simulation` and `output` deck sections of the fixed-step scenes: the loop writes
+// rows, reports progress, writes checkpoints, stops on SIGINT/SIGTERM and keeps every row written
+// so far when a step fails.
+#include <filesystem>
 #include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "fowtsim/core/channels.hpp"
@@ -18,7 +22,7 @@ io::Schema output_schema();                          // format, decimation, chan
 
 struct FixedStepScene {
   std::vector<ChannelInfo> written;                   // channels in file order
-  io::RunMetadata metadata;                           // version, deck path and hash, dt filled in by run()
+  io::RunMetadata metadata;                           // the version is filled in by the loop
   std::function<void(double t, double dt)> step;      // advance from t to t + dt
   std::function<void(double t, std::span<double> row)> row;  // values of `written` at t
   // What the scene warns about at the end of the run (summary and HDF5); may be empty.
@@ -28,12 +32,34 @@ struct FixedStepScene {
   std::function<void(CheckpointReader&)> load;
 };
 
-// Runs t = 0, dt, …, t_max (deck or --tmax; dt must divide it, checked before any file is opened),
-// writing every output.decimation-th row to the files the request and deck name. An exception
-// during the run closes the files as "failed: …" (keeping every row so far) and propagates. A
-// SIGINT/SIGTERM (run/interrupt.hpp) stops the loop at the end of the current step: the files are
-// closed as "interrupted at t = …" and the report's interrupted_by names the signal.
+// The time axis and the files of a run: rows at t0, t0 + dt, …, t0 + steps·dt.
+struct FixedStepPlan {
+  double t0_s = 0.0;
+  double dt_s = 0.0;
+  long steps = 0;
+  double t_max_s = 0.0;        // the end the run was asked for (progress, report)
+  std::string format = "h5";   // h5 | out | both
+  long decimation = 1;         // write every k-th step
+  std::filesystem::path base;  // output files without their extension
+  std::string deck_hash;       // ties checkpoints to the deck
+};
+
+// The output part of a plan (format, decimation, files, deck hash) from the request and the
+// deck's optional `output` section; the time axis is the caller's.
+FixedStepPlan output_plan(const RunRequest& request, const io::ValidatedDeck& deck);
+
+// A deck with simulation.t_max_s (or --tmax) and simulation.dt_s: dt must divide the simulated
+// time, checked before any file is opened. The metadata gets the absolute deck path, its hash and
+// dt as both steps.
 RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& deck, FixedStepScene scene,
+                          const ProgressCallback& progress);
+
+// Runs the plan, writing the row at t0 and every decimation-th step after it to the files the
+// plan names. An exception during the run closes the files as "failed: …" (keeping every row so
+// far) and propagates. A SIGINT/SIGTERM (run/interrupt.hpp) stops the loop at the end of the
+// current step: the files are closed as "interrupted at t = …" and the report's interrupted_by
+// names the signal.
+RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, FixedStepScene scene,
                           const ProgressCallback& progress);
 
 }  // namespace fowtsim::driver

@@ -16,6 +16,16 @@ Eigen::Vector4d state_of(const Scheduler& s) {
           s.fast_state().velocity_m_s};
 }
 
+// The study's one time loop: the scheduler's large steps to its t_max, calling keep_going after
+// each; a false answer stops there. A NumericalError of a diverging run propagates.
+template <class KeepGoing>
+void run_large_steps(Scheduler& scheduler, KeepGoing&& keep_going) {
+  for (long i = 0; i < scheduler.settings().large_steps(); ++i) {
+    scheduler.step();
+    if (!keep_going(scheduler)) return;
+  }
+}
+
 CouplingSettings settings_for(CouplingMode mode, int substeps, double dt_coupling_s, double t_max_s) {
   CouplingSettings s;
   s.mode = mode;
@@ -37,20 +47,19 @@ ToyProblem study_problem() {
 
 ErrorSample measure_error(const ToyProblem& problem, CouplingMode mode, int substeps, double dt_coupling_s,
                           double t_max_s) {
-  const CouplingSettings settings = settings_for(mode, substeps, dt_coupling_s, t_max_s);
-  Scheduler scheduler(problem.slow, problem.fast, settings);
+  Scheduler scheduler(problem.slow, problem.fast, settings_for(mode, substeps, dt_coupling_s, t_max_s));
   const toy::ExactSolution exact(problem.slow, problem.fast);
   double slow_err = 0, fast_err = 0, slow_max = 0, fast_max = 0;
   ErrorSample sample{mode, substeps, dt_coupling_s, 0.0, 0.0, true};
   try {
-    for (long i = 0; i < settings.large_steps(); ++i) {
-      scheduler.step();
-      const Eigen::Vector4d z = state_of(scheduler), ze = exact.state_at(scheduler.time_s());
+    run_large_steps(scheduler, [&](const Scheduler& s) {
+      const Eigen::Vector4d z = state_of(s), ze = exact.state_at(s.time_s());
       slow_err = std::max(slow_err, std::abs(z[0] - ze[0]));
       fast_err = std::max(fast_err, std::abs(z[2] - ze[2]));
       slow_max = std::max(slow_max, std::abs(ze[0]));
       fast_max = std::max(fast_max, std::abs(ze[2]));
-    }
+      return true;
+    });
   } catch (const NumericalError&) {
     sample.finite = false;
   }
@@ -61,7 +70,7 @@ ErrorSample measure_error(const ToyProblem& problem, CouplingMode mode, int subs
 
 double run_only(const ToyProblem& problem, CouplingMode mode, int substeps, double dt_coupling_s, double t_max_s) {
   Scheduler scheduler(problem.slow, problem.fast, settings_for(mode, substeps, dt_coupling_s, t_max_s));
-  for (long i = 0; i < scheduler.settings().large_steps(); ++i) scheduler.step();
+  run_large_steps(scheduler, [](const Scheduler&) { return true; });
   return scheduler.slow_state().position_m;
 }
 
@@ -94,10 +103,10 @@ StabilityResult measure_stability(const ToyProblem& problem, CouplingMode mode, 
     Scheduler scheduler(problem.slow, problem.fast, settings_for(mode, substeps, dt, t_max));
     bool stable = true;
     try {
-      for (long i = 0; i < scheduler.settings().large_steps() && stable; ++i) {
-        scheduler.step();
-        stable = toy::mechanical_energy(problem.slow, problem.fast, state_of(scheduler)) < 2.0 * e0;
-      }
+      run_large_steps(scheduler, [&](const Scheduler& s) {
+        stable = toy::mechanical_energy(problem.slow, problem.fast, state_of(s)) < 2.0 * e0;
+        return stable;
+      });
     } catch (const NumericalError&) {
       stable = false;
     }

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "beamdyn/beamdyn_run.hpp"
 #include "verify/beamdyn_comparison.hpp"
 #include "beamdyn/beamdyn_setup.hpp"
 #include "verify/verify_cases.hpp"
@@ -201,10 +202,8 @@ double time_steps_only(const BeamDynSetup& setup, int segments, const beam::Dyna
   beam::BeamState state = beam::make_state(model);
   beam::BeamInput input;
   const auto start = std::chrono::steady_clock::now();
-  for (long k = 0; k < steps; ++k) {
-    beamdyn_input(setup, model, state, (k + stepper.input_time_fraction()) * setup.dt_s, input);
-    stepper.step(input, setup.dt_s, state);
-  }
+  for (long k = 0; k < steps; ++k)
+    step_beamdyn(setup, model, stepper, setup.t_initial_s + k * setup.dt_s, setup.dt_s, input, state);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
