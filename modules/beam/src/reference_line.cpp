@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/rotation.hpp"
 
 
 namespace fowtsim::beam {
@@ -46,10 +47,6 @@ class CubicSpline {
   std::vector<double> u_, y_, y2_;
 };
 
-Mat3 twist_about_axis3(double twist_rad) {
-  return Eigen::AngleAxisd(twist_rad, Vec3::UnitZ()).toRotationMatrix();
-}
-
 }  // namespace
 
 ReferenceLine::ReferenceLine(double length_m, Curve curve)
@@ -60,7 +57,7 @@ ReferenceLine::ReferenceLine(double length_m, Curve curve)
 ReferenceLine ReferenceLine::straight(const Vec3& origin, const Mat3& frame0, double length,
                                       std::function<double(double)> twist_rad) {
   return ReferenceLine(length, [=](double s) {
-    return LinePoint{origin + s * frame0.col(2), frame0 * twist_about_axis3(twist_rad(s))};
+    return LinePoint{origin + s * frame0.col(2), frame0 * rotation_z(twist_rad(s))};
   });
 }
 
@@ -68,7 +65,7 @@ ReferenceLine ReferenceLine::circular_arc(const Vec3& origin, const Mat3& frame0
                                           double angle) {
   return ReferenceLine(radius * angle, [=](double s) {
     const double phi = s / radius;  // turn about axis 2 that tilts axis 3 towards axis 1
-    const Mat3 turn = Eigen::AngleAxisd(phi, Vec3::UnitY()).toRotationMatrix();
+    const Mat3 turn = rotation_y(phi);
     const Vec3 local(radius * (1.0 - std::cos(phi)), 0.0, radius * std::sin(phi));
     return LinePoint{origin + frame0 * local, frame0 * turn};
   });
