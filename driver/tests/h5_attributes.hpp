@@ -8,31 +8,28 @@
 #include <catch2/catch.hpp>
 #include <hdf5.h>
 
+#include "fowtsim/io/hdf5_handle.hpp"
+
 namespace fowtsim::driver {
 
 inline std::string string_attribute(const std::filesystem::path& h5, const char* name) {
-  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  REQUIRE(file >= 0);
-  const hid_t attr = H5Aopen(file, name, H5P_DEFAULT);
-  const hid_t type = H5Aget_type(attr);
+  const io::hdf5::Handle file(H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  REQUIRE(file.valid());
+  const io::hdf5::Handle attr(H5Aopen(file.get(), name, H5P_DEFAULT), H5Aclose);
+  const io::hdf5::Handle type(H5Aget_type(attr.get()), H5Tclose);
   char* value = nullptr;
-  H5Aread(attr, type, &value);
+  H5Aread(attr.get(), type.get(), &value);
   std::string text = value ? value : "";
   H5free_memory(value);
-  H5Tclose(type);
-  H5Aclose(attr);
-  H5Fclose(file);
   return text;
 }
 
 inline double double_attribute(const std::filesystem::path& h5, const char* name) {
-  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  REQUIRE(file >= 0);
-  const hid_t attr = H5Aopen(file, name, H5P_DEFAULT);
+  const io::hdf5::Handle file(H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  REQUIRE(file.valid());
+  const io::hdf5::Handle attr(H5Aopen(file.get(), name, H5P_DEFAULT), H5Aclose);
   double value = NAN;
-  H5Aread(attr, H5T_NATIVE_DOUBLE, &value);
-  H5Aclose(attr);
-  H5Fclose(file);
+  H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &value);
   return value;
 }
 

@@ -38,7 +38,7 @@ std::span<const double> rows_of(const std::vector<double>& column, const post::R
   return std::span<const double>(column).subspan(rows.first, rows.size());
 }
 
-// One WelchEstimator per segment length, so FFTW plans once for all channels of that length.
+// One WelchEstimator per segment length: its window and FFT buffers serve all channels of that length.
 class WelchEstimators {
  public:
   const post::WelchEstimator& for_length(std::size_t segment_samples) {

@@ -4,11 +4,11 @@
 
 #include <cmath>
 #include <limits>
-#include <utility>
 
 #include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/io/hdf5_handle.hpp"
 
 namespace fowtsim::driver {
 
@@ -16,31 +16,20 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// One HDF5 identifier, closed by its own close function.
-class Id {
- public:
-  Id(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
-    if (id_ < 0) throw Error({"post.hdf5", std::nullopt, what, ""}, "HDF5 failed to create " + what);
-  }
-  Id(Id&& other) noexcept : id_(std::exchange(other.id_, H5I_INVALID_HID)), close_(other.close_) {}
-  Id(const Id&) = delete;
-  Id& operator=(const Id&) = delete;
-  ~Id() {
-    if (id_ >= 0) close_(id_);
-  }
-  hid_t get() const { return id_; }
+using io::hdf5::Handle;
 
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
+// `id` as an owning handle; throws naming `what` when HDF5 failed to create it.
+Handle created(hid_t id, Handle::Closer close, const std::string& what) {
+  if (id < 0) throw Error({"post.hdf5", std::nullopt, what, ""}, "HDF5 failed to create " + what);
+  return Handle(id, close);
+}
 
 void check(herr_t status, const std::string& what) {
   if (status < 0) throw Error({"post.hdf5", std::nullopt, what, ""}, "HDF5 failed to write " + what);
 }
 
-Id utf8_string_type() {
-  Id type(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
+Handle utf8_string_type() {
+  Handle type = created(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
   check(H5Tset_size(type.get(), H5T_VARIABLE), "string type");
   check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "string type");
   return type;
@@ -48,8 +37,8 @@ Id utf8_string_type() {
 
 void write_doubles(hid_t group, const char* name, const double* data, std::initializer_list<hsize_t> dims) {
   const std::vector<hsize_t> shape(dims);
-  Id space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose, name);
-  Id set(H5Dcreate2(group, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose, name);
+  Handle space = created(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose, name);
+  Handle set = created(H5Dcreate2(group, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose, name);
   check(H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), name);
 }
 
@@ -67,29 +56,29 @@ void write_strings(hid_t group, const char* name, const std::vector<std::string>
   std::vector<const char*> pointers;
   pointers.reserve(values.size());
   for (const std::string& v : values) pointers.push_back(v.c_str());
-  const Id type = utf8_string_type();
+  const Handle type = utf8_string_type();
   const hsize_t n = values.size();
-  Id space(H5Screate_simple(1, &n, nullptr), H5Sclose, name);
-  Id set(H5Dcreate2(group, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose, name);
+  Handle space = created(H5Screate_simple(1, &n, nullptr), H5Sclose, name);
+  Handle set = created(H5Dcreate2(group, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose, name);
   if (n > 0) check(H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), name);
 }
 
 void attribute(hid_t object, const char* name, const std::string& value) {
-  const Id type = utf8_string_type();
-  Id space(H5Screate(H5S_SCALAR), H5Sclose, name);
-  Id attr(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose, name);
+  const Handle type = utf8_string_type();
+  Handle space = created(H5Screate(H5S_SCALAR), H5Sclose, name);
+  Handle attr = created(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose, name);
   const char* text = value.c_str();
   check(H5Awrite(attr.get(), type.get(), &text), name);
 }
 
 void attribute(hid_t object, const char* name, double value) {
-  Id space(H5Screate(H5S_SCALAR), H5Sclose, name);
-  Id attr(H5Acreate2(object, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose, name);
+  Handle space = created(H5Screate(H5S_SCALAR), H5Sclose, name);
+  Handle attr = created(H5Acreate2(object, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose, name);
   check(H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value), name);
 }
 
-Id group(hid_t parent, const std::string& name) {
-  return Id(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, name);
+Handle group(hid_t parent, const std::string& name) {
+  return created(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, name);
 }
 
 // A numbered group name that sorts in creation order: "000", "001", …
@@ -112,7 +101,7 @@ std::vector<std::string> text_column(const std::vector<Row>& rows, Get get) {
 }
 
 void write_statistics(hid_t file, const PostResults& results) {
-  const Id g = group(file, "statistics");
+  const Handle g = group(file, "statistics");
   const std::vector<PostRow>& rows = results.rows;
   write_strings(g.get(), "file", text_column(rows, [](const PostRow& r) { return r.file; }));
   write_strings(g.get(), "channel", text_column(rows, [](const PostRow& r) { return r.channel; }));
@@ -143,10 +132,10 @@ void write_statistics(hid_t file, const PostResults& results) {
 }
 
 void write_spectra(hid_t file, const std::vector<ChannelSpectrum>& spectra) {
-  const Id psd = group(file, "psd");
+  const Handle psd = group(file, "psd");
   for (std::size_t i = 0; i < spectra.size(); ++i) {
     const ChannelSpectrum& s = spectra[i];
-    const Id g = group(psd.get(), numbered(i));
+    const Handle g = group(psd.get(), numbered(i));
     attribute(g.get(), "file", s.file);
     attribute(g.get(), "channel", s.channel);
     attribute(g.get(), "unit", s.unit);
@@ -160,11 +149,11 @@ void write_spectra(hid_t file, const std::vector<ChannelSpectrum>& spectra) {
 }
 
 void write_modes(hid_t file, const std::vector<FileModes>& all_modes) {
-  const Id pom = group(file, "pom");
+  const Handle pom = group(file, "pom");
   for (std::size_t i = 0; i < all_modes.size(); ++i) {
     const FileModes& f = all_modes[i];
     const post::ProperOrthogonalModes& m = f.modes;
-    const Id g = group(pom.get(), numbered(i));
+    const Handle g = group(pom.get(), numbered(i));
     attribute(g.get(), "file", f.file);
     attribute(g.get(), "unit", f.unit);
     write_strings(g.get(), "nodes", f.nodes);
@@ -185,7 +174,7 @@ void write_modes(hid_t file, const std::vector<FileModes>& all_modes) {
 }
 
 void write_lifetime(hid_t file, const LifetimeResult& life) {
-  const Id g = group(file, "lifetime");
+  const Handle g = group(file, "lifetime");
   attribute(g.get(), "design_life_years", life.design_life_years);
   attribute(g.get(), "equivalent_frequency_hz", life.equivalent_frequency_hz);
   attribute(g.get(), "distribution", life.distribution);
@@ -195,7 +184,7 @@ void write_lifetime(hid_t file, const LifetimeResult& life) {
   write_doubles(g.get(), "damage_sum", column(life.channels, [](const LifetimeChannel& c) { return c.load.damage_sum; }));
   write_doubles(g.get(), "damage_equivalent_load",
                 column(life.channels, [](const LifetimeChannel& c) { return c.load.damage_equivalent_load; }));
-  const Id runs = group(g.get(), "runs");
+  const Handle runs = group(g.get(), "runs");
   write_strings(runs.get(), "file", text_column(life.runs, [](const LifetimeRunRow& r) { return r.file; }));
   write_doubles(runs.get(), "wind_speed_m_s", column(life.runs, [](const LifetimeRunRow& r) { return r.wind_speed_m_s; }));
   write_doubles(runs.get(), "time_fraction", column(life.runs, [](const LifetimeRunRow& r) { return r.time_fraction; }));
@@ -203,9 +192,9 @@ void write_lifetime(hid_t file, const LifetimeResult& life) {
 }
 
 void write_series(hid_t file, const std::vector<PlotSeries>& series) {
-  const Id root = group(file, "series");
+  const Handle root = group(file, "series");
   for (std::size_t i = 0; i < series.size(); ++i) {
-    const Id g = group(root.get(), numbered(i));
+    const Handle g = group(root.get(), numbered(i));
     attribute(g.get(), "file", series[i].file);
     attribute(g.get(), "channel", series[i].channel);
     attribute(g.get(), "unit", series[i].unit);
@@ -219,7 +208,7 @@ void write_series(hid_t file, const std::vector<PlotSeries>& series) {
 void write_post_hdf5(const std::filesystem::path& path, const PostResults& results, const std::vector<PlotSeries>& series) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // our exceptions carry the context; HDF5 must not print
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  const Id file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "file " + path.string());
+  const Handle file = created(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "file " + path.string());
   write_statistics(file.get(), results);
   if (!results.spectra.empty()) write_spectra(file.get(), results.spectra);
   if (!results.modes.empty()) write_modes(file.get(), results.modes);

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/io/hdf5_handle.hpp"
 
 namespace fowtsim::driver::sweep {
 
@@ -24,41 +25,34 @@ const char* state_name(CaseState state) {
 
 namespace {
 
-// Closes an HDF5 identifier when it goes out of scope.
-struct Closer {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  ~Closer() {
-    if (id >= 0) close(id);
-  }
-};
+using io::hdf5::Handle;
 
 std::optional<std::string> string_attribute(hid_t object, const char* name) {
   if (H5Aexists(object, name) <= 0) return std::nullopt;
-  const Closer attribute{H5Aopen(object, name, H5P_DEFAULT), H5Aclose};
-  const Closer type{H5Aget_type(attribute.id), H5Tclose};
-  if (attribute.id < 0 || type.id < 0 || H5Tget_class(type.id) != H5T_STRING) return std::nullopt;
-  if (H5Tis_variable_str(type.id) > 0) {
-    const Closer memory{H5Tcopy(H5T_C_S1), H5Tclose};
-    H5Tset_size(memory.id, H5T_VARIABLE);
-    H5Tset_cset(memory.id, H5Tget_cset(type.id));
+  const Handle attribute(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
+  const Handle type(H5Aget_type(attribute.get()), H5Tclose);
+  if (!attribute.valid() || !type.valid() || H5Tget_class(type.get()) != H5T_STRING) return std::nullopt;
+  if (H5Tis_variable_str(type.get()) > 0) {
+    const Handle memory(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(memory.get(), H5T_VARIABLE);
+    H5Tset_cset(memory.get(), H5Tget_cset(type.get()));
     char* text = nullptr;
-    if (H5Aread(attribute.id, memory.id, &text) < 0 || text == nullptr) return std::nullopt;
+    if (H5Aread(attribute.get(), memory.get(), &text) < 0 || text == nullptr) return std::nullopt;
     std::string value(text);
     H5free_memory(text);
     return value;
   }
-  std::string value(H5Tget_size(type.id), '\0');
-  if (H5Aread(attribute.id, type.id, value.data()) < 0) return std::nullopt;
+  std::string value(H5Tget_size(type.get()), '\0');
+  if (H5Aread(attribute.get(), type.get(), value.data()) < 0) return std::nullopt;
   value.resize(value.find('\0') == std::string::npos ? value.size() : value.find('\0'));
   return value;
 }
 
 std::optional<double> double_attribute(hid_t object, const char* name) {
   if (H5Aexists(object, name) <= 0) return std::nullopt;
-  const Closer attribute{H5Aopen(object, name, H5P_DEFAULT), H5Aclose};
+  const Handle attribute(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
   double value = 0.0;
-  if (attribute.id < 0 || H5Aread(attribute.id, H5T_NATIVE_DOUBLE, &value) < 0) return std::nullopt;
+  if (!attribute.valid() || H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0) return std::nullopt;
   return value;
 }
 
@@ -88,14 +82,14 @@ std::optional<int> read_exit_code(const fs::path& file) {
 }  // namespace
 
 RunAttributes read_run_attributes(const fs::path& h5) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are ours to report, not HDF5's to print
-  const Closer file{H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
-  if (file.id < 0) throw Error({"sweep", std::nullopt, "output", "remove it to rerun the case"}, "cannot open " + h5.string() + " as HDF5");
+  io::hdf5::silence_error_printing();  // errors are ours to report, not HDF5's to print
+  const Handle file(H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.valid()) throw Error({"sweep", std::nullopt, "output", "remove it to rerun the case"}, "cannot open " + h5.string() + " as HDF5");
   RunAttributes a;
-  a.status = string_attribute(file.id, "status").value_or("");
-  a.deck_hash = string_attribute(file.id, "deck_hash").value_or("");
-  a.wall_time_s = double_attribute(file.id, "wall_time_s");
-  a.end_time_s = double_attribute(file.id, "end_time_s");
+  a.status = string_attribute(file.get(), "status").value_or("");
+  a.deck_hash = string_attribute(file.get(), "deck_hash").value_or("");
+  a.wall_time_s = double_attribute(file.get(), "wall_time_s");
+  a.end_time_s = double_attribute(file.get(), "end_time_s");
   return a;
 }
 

@@ -11,11 +11,14 @@
 #include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/io/hdf5_handle.hpp"
 #include "sweep/load_table.hpp"
 
 namespace fowtsim::driver::sweep {
 
 namespace {
+
+using io::hdf5::Handle;
 
 struct TextColumn {
   std::string name;
@@ -156,74 +159,66 @@ void write_markdown(const LoadTable& t, const std::filesystem::path& path) {
 
 // ── HDF5 ──────────────────────────────────────────────────────────────────────────────────────
 
-struct Hid {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  ~Hid() {
-    if (id >= 0) close(id);
-  }
-};
-
 [[noreturn]] void hdf5_failure(const std::filesystem::path& path, const std::string& what) {
   throw Error({"sweep", std::nullopt, "load_table.h5", "check the output folder"}, "HDF5 failure on " + path.string() + ": " + what);
 }
 
 void string_attribute(hid_t object, const char* name, const std::string& value, const std::filesystem::path& path) {
-  const Hid type{H5Tcopy(H5T_C_S1), H5Tclose};
-  H5Tset_size(type.id, H5T_VARIABLE);
-  H5Tset_cset(type.id, H5T_CSET_UTF8);
-  const Hid space{H5Screate(H5S_SCALAR), H5Sclose};
-  const Hid attribute{H5Acreate2(object, name, type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+  const Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.get(), H5T_VARIABLE);
+  H5Tset_cset(type.get(), H5T_CSET_UTF8);
+  const Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  const Handle attribute(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
   const char* text = value.c_str();
-  if (attribute.id < 0 || H5Awrite(attribute.id, type.id, &text) < 0) hdf5_failure(path, std::string("attribute ") + name);
+  if (!attribute.valid() || H5Awrite(attribute.get(), type.get(), &text) < 0) hdf5_failure(path, std::string("attribute ") + name);
 }
 
 void double_attribute(hid_t object, const char* name, double value, const std::filesystem::path& path) {
-  const Hid space{H5Screate(H5S_SCALAR), H5Sclose};
-  const Hid attribute{H5Acreate2(object, name, H5T_IEEE_F64LE, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
-  if (attribute.id < 0 || H5Awrite(attribute.id, H5T_NATIVE_DOUBLE, &value) < 0) hdf5_failure(path, std::string("attribute ") + name);
+  const Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  const Handle attribute(H5Acreate2(object, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (!attribute.valid() || H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0) hdf5_failure(path, std::string("attribute ") + name);
 }
 
 void number_dataset(hid_t file, const std::string& name, const std::vector<double>& values, const std::string& unit,
                     const std::filesystem::path& path) {
   const hsize_t n = values.size();
-  const Hid space{H5Screate_simple(1, &n, nullptr), H5Sclose};
-  const Hid dataset{H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose};
-  if (dataset.id < 0 || (n > 0 && H5Dwrite(dataset.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0))
+  const Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
+  const Handle dataset(H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+  if (!dataset.valid() || (n > 0 && H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0))
     hdf5_failure(path, "dataset " + name);
-  string_attribute(dataset.id, "unit", unit, path);
+  string_attribute(dataset.get(), "unit", unit, path);
 }
 
 void string_dataset(hid_t file, const std::string& name, const std::vector<std::string>& values, const std::filesystem::path& path) {
   const hsize_t n = values.size();
-  const Hid type{H5Tcopy(H5T_C_S1), H5Tclose};
-  H5Tset_size(type.id, H5T_VARIABLE);
-  H5Tset_cset(type.id, H5T_CSET_UTF8);
-  const Hid space{H5Screate_simple(1, &n, nullptr), H5Sclose};
-  const Hid dataset{H5Dcreate2(file, name.c_str(), type.id, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose};
+  const Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.get(), H5T_VARIABLE);
+  H5Tset_cset(type.get(), H5T_CSET_UTF8);
+  const Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
+  const Handle dataset(H5Dcreate2(file, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
   std::vector<const char*> text;
   for (const std::string& v : values) text.push_back(v.c_str());
-  if (dataset.id < 0 || (n > 0 && H5Dwrite(dataset.id, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()) < 0))
+  if (!dataset.valid() || (n > 0 && H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data()) < 0))
     hdf5_failure(path, "dataset " + name);
 }
 
 void write_hdf5(const LoadTable& t, const std::filesystem::path& path) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // failures are reported by the exceptions below
-  const Hid file{H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
-  if (file.id < 0) hdf5_failure(path, "cannot create the file");
-  string_attribute(file.id, "sweep", t.sweep_name, path);
-  double_attribute(file.id, "transient_s", t.transient_s, path);
-  double_attribute(file.id, "analysis_s", t.analysis_s, path);
+  io::hdf5::silence_error_printing();  // failures are reported by the exceptions below
+  const Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  if (!file.valid()) hdf5_failure(path, "cannot create the file");
+  string_attribute(file.get(), "sweep", t.sweep_name, path);
+  double_attribute(file.get(), "transient_s", t.transient_s, path);
+  double_attribute(file.get(), "analysis_s", t.analysis_s, path);
   constexpr double kAbsent = std::numeric_limits<double>::quiet_NaN();  // a case without this value
   for (const TextColumn& c : text_columns(t)) {
     std::vector<std::string> values;
     for (const LoadTableRow& r : t.rows) values.push_back(c.value(r));
-    string_dataset(file.id, c.name, values, path);
+    string_dataset(file.get(), c.name, values, path);
   }
   for (const NumberColumn& c : number_columns(t)) {
     std::vector<double> values;
     for (const LoadTableRow& r : t.rows) values.push_back(c.value(r).value_or(kAbsent));
-    number_dataset(file.id, c.name, values, c.unit, path);
+    number_dataset(file.get(), c.name, values, c.unit, path);
   }
   std::vector<std::string> channels;
   std::vector<double> exponents, dels, damages, runs;
@@ -234,11 +229,11 @@ void write_hdf5(const LoadTable& t, const std::filesystem::path& path) {
     damages.push_back(t.lifetime[k].load ? t.lifetime[k].load->damage_sum : kAbsent);
     runs.push_back(static_cast<double>(t.lifetime[k].runs));
   }
-  string_dataset(file.id, "lifetime_channel", channels, path);
-  number_dataset(file.id, "lifetime_wohler_exponent", exponents, "", path);
-  number_dataset(file.id, "lifetime_DEL", dels, "channel unit", path);
-  number_dataset(file.id, "lifetime_damage_sum", damages, "channel unit^m", path);
-  number_dataset(file.id, "lifetime_runs", runs, "", path);
+  string_dataset(file.get(), "lifetime_channel", channels, path);
+  number_dataset(file.get(), "lifetime_wohler_exponent", exponents, "", path);
+  number_dataset(file.get(), "lifetime_DEL", dels, "channel unit", path);
+  number_dataset(file.get(), "lifetime_damage_sum", damages, "channel unit^m", path);
+  number_dataset(file.get(), "lifetime_runs", runs, "", path);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "fowtsim/aero/tower_influence.hpp"
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/rotation.hpp"
 
 namespace fowtsim::aero {
 namespace {
@@ -49,13 +50,6 @@ void check_input(const Params& params, const Aero::Input& in) {
   require_finite(in.node_pitch_rate_rad_s.allFinite(), "node_pitch_rate_rad_s", t);
   for (const Mat3& m : in.node_orientation) require_finite(m.allFinite(), "node_orientation", t);
   require_finite(in.tower_base_position_m.allFinite() && in.tower_axis.allFinite(), "tower pose", t);
-}
-
-Mat3 rotation_z(double angle_rad) {
-  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
-  Mat3 r;
-  r << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
-  return r;
 }
 
 // Exact integral over the blade of the loads linear between nodes (AeroDyn's line-to-point load

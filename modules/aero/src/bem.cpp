@@ -1,11 +1,11 @@
 #include "fowtsim/aero/bem.hpp"
 
 #include <cmath>
-#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
 
+#include "fowtsim/core/brent.hpp"
 #include "fowtsim/core/error.hpp"
 
 namespace fowtsim::aero {
@@ -78,60 +78,12 @@ class Residual {
   double sx_, sy_, velocity_ratio_, solidity_;
 };
 
-// Brent's method (Brent 1973, "Algorithms for minimization without derivatives", ch. 4) on a
-// bracket [a, b] with f(a) f(b) ≤ 0: inverse quadratic interpolation or secant steps, bisection
-// whenever they would leave the bracket or converge slowly. Always converges.
-double brent_root(const Residual& f, double a, double b, double fa, double fb) {
+// The root of R(φ_c) in a bracket [a, b] with R(a) R(b) <= 0, by Brent's method.
+double root_in_bracket(const Residual& f, double a, double b, double fa, double fb) {
   constexpr double kTolerance = 1e-12;  // on φ [rad]
   constexpr int kMaxIterations = 200;   // bisection alone halves π in 45 steps
-  double c = a, fc = fa, d = b - a, e = d;
-  for (int it = 0; it < kMaxIterations; ++it) {
-    if ((fb > 0.0) == (fc > 0.0)) {
-      c = a;
-      fc = fa;
-      d = e = b - a;
-    }
-    if (std::abs(fc) < std::abs(fb)) {
-      a = b;
-      b = c;
-      c = a;
-      fa = fb;
-      fb = fc;
-      fc = fa;
-    }
-    const double tol = 2.0 * std::numeric_limits<double>::epsilon() * std::abs(b) + 0.5 * kTolerance;
-    const double m = 0.5 * (c - b);
-    if (std::abs(m) <= tol || fb == 0.0) return b;
-    if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
-      double p, q;
-      const double s = fb / fa;
-      if (a == c) {
-        p = 2.0 * m * s;
-        q = 1.0 - s;
-      } else {
-        const double qa = fa / fc, r = fb / fc;
-        p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
-        q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
-      }
-      if (p > 0.0) q = -q;
-      p = std::abs(p);
-      if (2.0 * p < std::min(3.0 * m * q - std::abs(tol * q), std::abs(e * q))) {
-        e = d;
-        d = p / q;
-      } else {
-        d = m;
-        e = m;
-      }
-    } else {
-      d = m;
-      e = m;
-    }
-    a = b;
-    fa = fb;
-    b += std::abs(d) > tol ? d : (m > 0.0 ? tol : -tol);
-    fb = f(b).residual;
-  }
-  return b;
+  return fowtsim::brent_root([&f](double phi_c) { return f(phi_c).residual; }, a, b, fa, fb, kTolerance,
+                             kMaxIterations);
 }
 
 bool opposite(double fa, double fb) { return (fa <= 0.0 && fb >= 0.0) || (fa >= 0.0 && fb <= 0.0); }
@@ -146,7 +98,7 @@ bool find_root(const Residual& f, double& phi_c, double warm_start) {
       std::abs(b) < kPi - kBracketOffset) {
     const double fa = f(a).residual, fb = f(b).residual;
     if (opposite(fa, fb)) {
-      phi_c = brent_root(f, a, b, fa, fb);
+      phi_c = root_in_bracket(f, a, b, fa, fb);
       return true;
     }
   }
@@ -156,7 +108,7 @@ bool find_root(const Residual& f, double& phi_c, double warm_start) {
   for (const auto& ab : pairs) {
     const double fa = f(ab[0]).residual, fb = f(ab[1]).residual;
     if (opposite(fa, fb)) {
-      phi_c = brent_root(f, ab[0], ab[1], fa, fb);
+      phi_c = root_in_bracket(f, ab[0], ab[1], fa, fb);
       return true;
     }
   }
@@ -166,7 +118,7 @@ bool find_root(const Residual& f, double& phi_c, double warm_start) {
     for (int i = 1; i <= kScanIntervals; ++i) {
       const double b = side * (kBracketOffset + i * h), fb = f(b).residual;
       if (opposite(fa, fb)) {
-        phi_c = side > 0.0 ? brent_root(f, a, b, fa, fb) : brent_root(f, b, a, fb, fa);
+        phi_c = side > 0.0 ? root_in_bracket(f, a, b, fa, fb) : root_in_bracket(f, b, a, fb, fa);
         return true;
       }
       a = b;

@@ -9,6 +9,7 @@
 
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/interpolation.hpp"
+#include "fowtsim/core/spline.hpp"
 
 namespace fowtsim::aero {
 namespace {
@@ -19,39 +20,6 @@ constexpr double kDegree = std::numbers::pi / 180.0;
   throw InputError({"aero", std::nullopt, fmt::format("aero.airfoils[{}].polar", name),
                     "transcribe the full ±180° table from the airfoil file"},
                    fmt::format("airfoil '{}': {}", name, what));
-}
-
-// Second derivatives of the natural cubic spline through (x, y): the tridiagonal system of
-// continuous first derivatives with y'' = 0 at both ends (Press et al., Numerical Recipes §3.3),
-// solved by the Thomas algorithm.
-std::vector<double> natural_spline_second_derivatives(const std::vector<double>& x,
-                                                      const std::vector<double>& y) {
-  const std::size_t n = x.size();
-  std::vector<double> m(n, 0.0);
-  if (n < 3) return m;
-  std::vector<double> diag(n, 1.0), upper(n, 0.0), rhs(n, 0.0);
-  for (std::size_t i = 1; i + 1 < n; ++i) {
-    const double h0 = x[i] - x[i - 1], h1 = x[i + 1] - x[i];
-    const double lower = h0 / 6.0;
-    diag[i] = (h0 + h1) / 3.0;
-    upper[i] = h1 / 6.0;
-    rhs[i] = (y[i + 1] - y[i]) / h1 - (y[i] - y[i - 1]) / h0;
-    // Forward elimination with row i−1 (row 0 is the identity row m0 = 0).
-    const double w = lower / diag[i - 1];
-    diag[i] -= w * upper[i - 1];
-    rhs[i] -= w * rhs[i - 1];
-  }
-  for (std::size_t i = n - 2; i >= 1; --i) {
-    m[i] = (rhs[i] - upper[i] * m[i + 1]) / diag[i];
-  }
-  return m;
-}
-
-double spline_value(const std::vector<double>& x, const std::vector<double>& y,
-                    const std::vector<double>& m, std::size_t i, double xq) {
-  const double h = x[i + 1] - x[i];
-  const double a = (x[i + 1] - xq) / h, b = (xq - x[i]) / h;
-  return a * y[i] + b * y[i + 1] + ((a * a * a - a) * m[i] + (b * b * b - b) * m[i + 1]) * h * h / 6.0;
 }
 
 }  // namespace
@@ -101,8 +69,8 @@ AirfoilCoefficients Polar::evaluate(double alpha_rad) const {
   const double a = wrap_angle(alpha_rad);
   const std::size_t i = bracket_index(std::span<const double>(alpha_), a);
   if (interpolation_ == PolarInterpolation::cubic_spline) {
-    return {spline_value(alpha_, cl_, cl2_, i, a), spline_value(alpha_, cd_, cd2_, i, a),
-            spline_value(alpha_, cm_, cm2_, i, a)};
+    return {natural_spline_value(alpha_, cl_, cl2_, i, a), natural_spline_value(alpha_, cd_, cd2_, i, a),
+            natural_spline_value(alpha_, cm_, cm2_, i, a)};
   }
   const double s = (a - alpha_[i]) / (alpha_[i + 1] - alpha_[i]);
   return {lerp(cl_[i], cl_[i + 1], s), lerp(cd_[i], cd_[i + 1], s), lerp(cm_[i], cm_[i + 1], s)};

@@ -10,47 +10,11 @@
 #include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/rotation.hpp"
+#include "fowtsim/core/spline.hpp"
 
 
 namespace fowtsim::beam {
-namespace {
-
-// Natural cubic spline y(u) through (u_i, y_i): second derivatives by the tridiagonal system.
-class CubicSpline {
- public:
-  CubicSpline(std::vector<double> u, std::vector<double> y) : u_(std::move(u)), y_(std::move(y)) {
-    const std::size_t n = u_.size();
-    y2_.assign(n, 0.0);
-    if (n < 3) return;  // two points: the spline is the straight line
-    std::vector<double> c(n, 0.0);
-    for (std::size_t i = 1; i + 1 < n; ++i) {  // Thomas algorithm, natural ends y2 = 0
-      const double sig = (u_[i] - u_[i - 1]) / (u_[i + 1] - u_[i - 1]);
-      const double p = sig * y2_[i - 1] + 2.0;
-      y2_[i] = (sig - 1.0) / p;
-      const double dy = (y_[i + 1] - y_[i]) / (u_[i + 1] - u_[i]) - (y_[i] - y_[i - 1]) / (u_[i] - u_[i - 1]);
-      c[i] = (6.0 * dy / (u_[i + 1] - u_[i - 1]) - sig * c[i - 1]) / p;
-    }
-    for (std::size_t k = n - 1; k-- > 1;) y2_[k] = y2_[k] * y2_[k + 1] + c[k];
-  }
-
-  double operator()(double u) const {
-    const auto hi = std::clamp<std::size_t>(
-        std::upper_bound(u_.begin(), u_.end(), u) - u_.begin(), 1, u_.size() - 1);
-    const std::size_t lo = hi - 1;
-    const double h = u_[hi] - u_[lo];
-    const double a = (u_[hi] - u) / h, b = (u - u_[lo]) / h;
-    return a * y_[lo] + b * y_[hi] + ((a * a * a - a) * y2_[lo] + (b * b * b - b) * y2_[hi]) * h * h / 6.0;
-  }
-
- private:
-  std::vector<double> u_, y_, y2_;
-};
-
-Mat3 twist_about_axis3(double twist_rad) {
-  return Eigen::AngleAxisd(twist_rad, Vec3::UnitZ()).toRotationMatrix();
-}
-
-}  // namespace
 
 ReferenceLine::ReferenceLine(double length_m, Curve curve)
     : length_m_(length_m), curve_(std::move(curve)) {
@@ -60,7 +24,7 @@ ReferenceLine::ReferenceLine(double length_m, Curve curve)
 ReferenceLine ReferenceLine::straight(const Vec3& origin, const Mat3& frame0, double length,
                                       std::function<double(double)> twist_rad) {
   return ReferenceLine(length, [=](double s) {
-    return LinePoint{origin + s * frame0.col(2), frame0 * twist_about_axis3(twist_rad(s))};
+    return LinePoint{origin + s * frame0.col(2), frame0 * rotation_z(twist_rad(s))};
   });
 }
 
@@ -68,7 +32,7 @@ ReferenceLine ReferenceLine::circular_arc(const Vec3& origin, const Mat3& frame0
                                           double angle) {
   return ReferenceLine(radius * angle, [=](double s) {
     const double phi = s / radius;  // turn about axis 2 that tilts axis 3 towards axis 1
-    const Mat3 turn = Eigen::AngleAxisd(phi, Vec3::UnitY()).toRotationMatrix();
+    const Mat3 turn = rotation_y(phi);
     const Vec3 local(radius * (1.0 - std::cos(phi)), 0.0, radius * std::sin(phi));
     return LinePoint{origin + frame0 * local, frame0 * turn};
   });
@@ -118,9 +82,9 @@ ReferenceLine ReferenceLine::through_key_points(const std::vector<Vec3>& points,
   std::array<std::vector<double>, 3> coord;
   for (const Vec3& p : points)
     for (int k = 0; k < 3; ++k) coord[k].push_back(p[k]);
-  auto splines = std::make_shared<std::array<CubicSpline, 4>>(std::array<CubicSpline, 4>{
-      CubicSpline(u, coord[0]), CubicSpline(u, coord[1]), CubicSpline(u, coord[2]),
-      CubicSpline(u, twist_rad)});
+  auto splines = std::make_shared<std::array<NaturalCubicSpline, 4>>(std::array<NaturalCubicSpline, 4>{
+      NaturalCubicSpline(u, coord[0]), NaturalCubicSpline(u, coord[1]), NaturalCubicSpline(u, coord[2]),
+      NaturalCubicSpline(u, twist_rad)});
   return parametric([splines](double uu) { return Vec3((*splines)[0](uu), (*splines)[1](uu), (*splines)[2](uu)); },
                     [splines](double uu) { return (*splines)[3](uu); }, 0.0, u.back());
 }

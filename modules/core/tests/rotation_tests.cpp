@@ -102,3 +102,35 @@ TEST_CASE("Euler rates are rejected at gimbal lock", "[unit][rotation]") {
   CHECK_THROWS_WITH(euler123_rates_from_body_angular_velocity({0.0, M_PI / 2, 0.0}, {0.1, 0, 0}),
                     Catch::Contains("theta2"));
 }
+
+TEST_CASE("elementary rotations are the explicit matrices T_ab, v_a = T_ab v_b", "[unit][rotation]") {
+  const double a = 0.7, c = std::cos(a), s = std::sin(a);
+  Mat3 rx, ry, rz;
+  rx << 1, 0, 0, 0, c, -s, 0, s, c;
+  ry << c, 0, s, 0, 1, 0, -s, 0, c;
+  rz << c, -s, 0, s, c, 0, 0, 0, 1;
+  CHECK(rotation_x(a) == rx);  // the same cos/sin in the same places: exact
+  CHECK(rotation_y(a) == ry);
+  CHECK(rotation_z(a) == rz);
+  // Right-hand rule: a quarter turn about z carries b's x axis onto a's y axis, and so on round.
+  // Tolerance 1e-16: cos(π/2) in doubles is 6.1e-17, not 0.
+  CHECK((rotation_z(M_PI / 2) * Vec3::UnitX() - Vec3::UnitY()).norm() < 1e-16);
+  CHECK((rotation_x(M_PI / 2) * Vec3::UnitY() - Vec3::UnitZ()).norm() < 1e-16);
+  CHECK((rotation_y(M_PI / 2) * Vec3::UnitZ() - Vec3::UnitX()).norm() < 1e-16);
+  // Rotations about one axis add: 1e-15 is a few roundings of entries of size 1.
+  CHECK((rotation_y(0.4) * rotation_y(-1.3) - rotation_y(-0.9)).norm() < 1e-15);
+  CHECK((rotation_x(a) * rotation_x(-a) - Mat3::Identity()).norm() < 1e-15);
+}
+
+TEST_CASE("elementary rotations equal Eigen's AngleAxisd bit for bit while cos a >= 0", "[unit][rotation]") {
+  // AngleAxisd puts (1 − c) + c on the diagonal entry of the axis: exactly 1 for c >= 0, possibly
+  // 1 − 2⁻⁵³ for c < 0. Every other entry is the same cos/sin, so for |a| <= π/2 (the beam's
+  // twists and arc turns, which used AngleAxisd) the matrices are identical.
+  int differing = 0;
+  for (double a = -M_PI / 2; a <= M_PI / 2; a += 1e-4) {
+    differing += rotation_x(a) != Eigen::AngleAxisd(a, Vec3::UnitX()).toRotationMatrix();
+    differing += rotation_y(a) != Eigen::AngleAxisd(a, Vec3::UnitY()).toRotationMatrix();
+    differing += rotation_z(a) != Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix();
+  }
+  CHECK(differing == 0);  // exact: no tolerance
+}

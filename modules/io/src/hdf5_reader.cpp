@@ -10,7 +10,7 @@
 
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/readers.hpp"
-#include "hdf5_handle.hpp"
+#include "hdf5_check.hpp"
 
 namespace fowtsim::io {
 namespace {

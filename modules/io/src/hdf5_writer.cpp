@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
-#include "hdf5_handle.hpp"
+#include "hdf5_check.hpp"
 
 namespace fowtsim::io {
 namespace {

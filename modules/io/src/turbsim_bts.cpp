@@ -11,7 +11,7 @@
 
 #include "fowtsim/core/error.hpp"
 #include "file_bytes.hpp"
-#include "hdf5_handle.hpp"
+#include "hdf5_check.hpp"
 
 namespace fowtsim::io {
 namespace {

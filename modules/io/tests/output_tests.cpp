@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/io/hdf5_handle.hpp"
 #include "fowtsim/io/hdf5_writer.hpp"
 #include "fowtsim/io/output_sink.hpp"
 #include "fowtsim/io/readers.hpp"
@@ -31,6 +32,7 @@ using fowtsim::io::RunEnd;
 using fowtsim::io::RunMetadata;
 using fowtsim::io::TextOutOptions;
 using fowtsim::io::TextOutWriter;
+using fowtsim::io::hdf5::Handle;
 
 std::vector<ChannelInfo> test_channels() {
   return {{"PtfmSurge", "m", "platform surge, inertial X", "toy"},
@@ -59,31 +61,26 @@ std::vector<double> row_values(std::size_t row) {
 double row_time(std::size_t row) { return 0.0125 * static_cast<double>(row); }
 
 // --- small HDF5 helpers for checking attributes independently of read_hdf5_channels ---
-struct H5 {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  ~H5() { if (id >= 0) close(id); }
-};
 
 std::optional<std::string> string_attribute(hid_t object, const char* name) {
   if (H5Aexists(object, name) <= 0) return std::nullopt;
-  const H5 attribute{H5Aopen(object, name, H5P_DEFAULT), H5Aclose};
-  const H5 type{H5Aget_type(attribute.id), H5Tclose};
+  const Handle attribute{H5Aopen(object, name, H5P_DEFAULT), H5Aclose};
+  const Handle type{H5Aget_type(attribute.get()), H5Tclose};
   // h5py returns str only for variable-length strings; insist on that and on UTF-8.
-  REQUIRE(H5Tis_variable_str(type.id) > 0);
-  REQUIRE(H5Tget_cset(type.id) == H5T_CSET_UTF8);
+  REQUIRE(H5Tis_variable_str(type.get()) > 0);
+  REQUIRE(H5Tget_cset(type.get()) == H5T_CSET_UTF8);
   char* text = nullptr;
-  REQUIRE(H5Aread(attribute.id, type.id, &text) >= 0);
+  REQUIRE(H5Aread(attribute.get(), type.get(), &text) >= 0);
   std::string value(text);
   H5free_memory(text);
   return value;
 }
 
 double double_attribute(hid_t object, const char* name) {
-  const H5 attribute{H5Aopen(object, name, H5P_DEFAULT), H5Aclose};
-  REQUIRE(attribute.id >= 0);
+  const Handle attribute{H5Aopen(object, name, H5P_DEFAULT), H5Aclose};
+  REQUIRE(attribute.get() >= 0);
   double value = 0.0;
-  REQUIRE(H5Aread(attribute.id, H5T_NATIVE_DOUBLE, &value) >= 0);
+  REQUIRE(H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value) >= 0);
   return value;
 }
 
@@ -120,27 +117,27 @@ TEST_CASE("HDF5 output reads back bit-exactly over several chunks, with its meta
   REQUIRE(table.find("RotSpeed") == std::optional<std::size_t>(2));
   REQUIRE_FALSE(table.find("GenPwr").has_value());
 
-  const H5 file{H5Fopen(path.string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
-  REQUIRE(file.id >= 0);
-  CHECK(string_attribute(file.id, "version") == "0.1.0");
-  CHECK(string_attribute(file.id, "deck_path") == "inputs/test.yaml");
-  CHECK(string_attribute(file.id, "deck_hash") == "0123abcd");
-  CHECK(string_attribute(file.id, "scene") == "unit test");
-  CHECK(string_attribute(file.id, "status") == "completed");
-  CHECK(double_attribute(file.id, "dt_s") == 0.0025);
-  CHECK(double_attribute(file.id, "dt_coupling_s") == 0.0125);
-  CHECK(double_attribute(file.id, "wall_time_s") == 3.5);
-  CHECK(double_attribute(file.id, "end_time_s") == row_time(kRows - 1));
+  const Handle file{H5Fopen(path.string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+  REQUIRE(file.get() >= 0);
+  CHECK(string_attribute(file.get(), "version") == "0.1.0");
+  CHECK(string_attribute(file.get(), "deck_path") == "inputs/test.yaml");
+  CHECK(string_attribute(file.get(), "deck_hash") == "0123abcd");
+  CHECK(string_attribute(file.get(), "scene") == "unit test");
+  CHECK(string_attribute(file.get(), "status") == "completed");
+  CHECK(double_attribute(file.get(), "dt_s") == 0.0025);
+  CHECK(double_attribute(file.get(), "dt_coupling_s") == 0.0125);
+  CHECK(double_attribute(file.get(), "wall_time_s") == 3.5);
+  CHECK(double_attribute(file.get(), "end_time_s") == row_time(kRows - 1));
   {
-    const H5 seeds{H5Aopen(file.id, "seeds", H5P_DEFAULT), H5Aclose};
+    const Handle seeds{H5Aopen(file.get(), "seeds", H5P_DEFAULT), H5Aclose};
     std::vector<std::uint64_t> values(2);
-    REQUIRE(H5Aread(seeds.id, H5T_NATIVE_UINT64, values.data()) >= 0);
+    REQUIRE(H5Aread(seeds.get(), H5T_NATIVE_UINT64, values.data()) >= 0);
     CHECK(values == test_metadata().seeds);
   }
-  const H5 dataset{H5Dopen2(file.id, "RootMyc1", H5P_DEFAULT), H5Dclose};
-  CHECK(string_attribute(dataset.id, "unit") == "kN-m");
-  CHECK(string_attribute(dataset.id, "description") == "blade 1 flapwise root moment");
-  CHECK(string_attribute(dataset.id, "module") == "toy");
+  const Handle dataset{H5Dopen2(file.get(), "RootMyc1", H5P_DEFAULT), H5Dclose};
+  CHECK(string_attribute(dataset.get(), "unit") == "kN-m");
+  CHECK(string_attribute(dataset.get(), "description") == "blade 1 flapwise root moment");
+  CHECK(string_attribute(dataset.get(), "module") == "toy");
 }
 
 TEST_CASE("HDF5 output survives a run that dies by exception", "[unit]") {
@@ -158,8 +155,8 @@ TEST_CASE("HDF5 output survives a run that dies by exception", "[unit]") {
   const ChannelTable table = fowtsim::io::read_hdf5_channels(path);
   REQUIRE(table.rows() == kRows);
   REQUIRE(table.columns[3][kRows - 1] == row_values(kRows - 1)[2]);
-  const H5 file{H5Fopen(path.string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
-  const auto status = string_attribute(file.id, "status");
+  const Handle file{H5Fopen(path.string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+  const auto status = string_attribute(file.get(), "status");
   REQUIRE(status.has_value());
   REQUIRE(*status != "completed");
 }
@@ -194,8 +191,8 @@ TEST_CASE("HDF5 output of a killed process keeps every block written before the 
     const std::size_t expected = explicit_flush ? kAppended : 2 * kBlock;
     REQUIRE(table.rows() == expected);
     REQUIRE(table.columns[1][expected - 1] == row_values(expected - 1)[0]);
-    const H5 file{H5Fopen(path.string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
-    REQUIRE(string_attribute(file.id, "status") == "running");
+    const Handle file{H5Fopen(path.string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+    REQUIRE(string_attribute(file.get(), "status") == "running");
   }
 }
 

@@ -7,17 +7,6 @@
 namespace fowtsim::multibody {
 namespace {
 
-Mat3 rot_x(double a) {
-  Mat3 m;
-  m << 1, 0, 0, 0, std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a);
-  return m;
-}
-Mat3 rot_z(double a) {
-  Mat3 m;
-  m << std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1;
-  return m;
-}
-
 // Child body turning relative to `parent` about the unit axis e (g) at relative rate `rate`
 // (and relative acceleration `rate_dot` when prescribed): ω = ω_p + rate e,
 // α_bias = α_p,bias + rate_dot e + ω_p × (rate e). `column` ≥ 0 adds `ratio` · e to J_ω there
@@ -89,7 +78,7 @@ void chain_kinematics(const Model& model, const State& state, ChainKinematics& o
   out.tower_top = point_on(r, b, r.position_m + t_gb * model.tower_top_b);
 
   // Nacelle: prescribed yaw about z_b.
-  const Mat3 t_gn = t_gb * rot_z(state.nacelle_yaw_rad);
+  const Mat3 t_gn = t_gb * rotation_z(state.nacelle_yaw_rad);
   out.nacelle = child_rotation(b, t_gn, t_gb.col(2), state.nacelle_yaw_rate_rad_s,
                                state.nacelle_yaw_acceleration_rad_s2, -1, 0.0);
   const Vec3& top = out.tower_top.position_m;
@@ -101,7 +90,7 @@ void chain_kinematics(const Model& model, const State& state, ChainKinematics& o
   out.shaft = out.nacelle;
   out.shaft.orientation = t_gn * model.shaft_in_nacelle;
   const Vec3 e_s = out.shaft.orientation.col(0);
-  out.rotor = child_rotation(out.nacelle, out.shaft.orientation * rot_x(state.rotor_azimuth_rad),
+  out.rotor = child_rotation(out.nacelle, out.shaft.orientation * rotation_x(state.rotor_azimuth_rad),
                              e_s, u[kRotor], 0.0, kRotor, 1.0);
   const double generator_rate = model.dof_count > kGenerator ? u[kGenerator] : u[kRotor];
   out.generator = child_rotation(out.nacelle, out.shaft.orientation, e_s, ratio * generator_rate,

@@ -56,17 +56,6 @@ RigidBody combine(const RigidBody& a, const RigidBody& b) {
 
 RigidBody point_mass(double mass, const Vec3& at) { return RigidBody{mass, at, Mat3::Zero()}; }
 
-Mat3 rot_x(double a) {
-  Mat3 m;
-  m << 1, 0, 0, 0, std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a);
-  return m;
-}
-Mat3 rot_y(double a) {
-  Mat3 m;
-  m << std::cos(a), 0, std::sin(a), 0, 1, 0, -std::sin(a), 0, std::cos(a);
-  return m;
-}
-
 class Problems {
  public:
   void require(bool ok, const std::string& key, double value, const std::string& expected) {
@@ -234,7 +223,7 @@ Model make_model(const Params& params) {
   // Shaft: x_s = (cos τ, 0, sin τ) in n with τ = ShftTilt, i.e. T_ns = R_y(−τ); the apex is
   // Twr2Shft up the yaw axis then OverHang along x_s (ElastoDyn's geometry).
   const double tilt = p.nacelle.shaft_tilt_deg * kDeg;
-  m.shaft_in_nacelle = rot_y(-tilt);
+  m.shaft_in_nacelle = rotation_y(-tilt);
   m.apex_n = Vec3(0.0, 0.0, p.nacelle.tower_to_shaft_m) + p.nacelle.overhang_m * m.shaft_in_nacelle.col(0);
 
   // Rotor: hub (axial inertia only, as ElastoDyn's HubIner) + rigid blades as line masses along
@@ -245,7 +234,7 @@ Model make_model(const Params& params) {
   rotor.inertia_kg_m2(0, 0) = p.rotor.hub_inertia_kg_m2;
   for (int i = 0; i < m.blade_count; ++i) {
     const double azimuth = 2.0 * std::numbers::pi * i / m.blade_count;
-    m.blade_root_orientation_h[i] = rot_x(azimuth) * rot_y(cone);
+    m.blade_root_orientation_h[i] = rotation_x(azimuth) * rotation_y(cone);
     const Vec3 axis = m.blade_root_orientation_h[i].col(2);
     m.blade_root_h[i] = p.rotor.hub_radius_m * axis;
     if (!p.rotor.flexible_blades && p.rotor.blade_mass_kg > 0.0) {

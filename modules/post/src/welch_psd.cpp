@@ -4,21 +4,11 @@
 #include <cmath>
 #include <numbers>
 
-#include <fftw3.h>
 #include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
 
 namespace fowtsim::post {
-
-struct WelchEstimator::Plan {
-  std::size_t length = 0;
-  std::vector<double> window;         // periodic Hann, L values
-  double window_power = 0.0;          // Σ w_j²
-  double* segment = nullptr;          // fftw_malloc'ed input, L values
-  fftw_complex* transform = nullptr;  // fftw_malloc'ed output, L/2 + 1 values
-  fftw_plan plan = nullptr;
-};
 
 double uniform_sample_rate_hz(std::span<const double> time_s) {
   if (time_s.size() < 2)
@@ -39,32 +29,26 @@ std::size_t segment_samples_for(double segment_s, double sample_rate_hz, std::si
   return std::min(requested, samples);
 }
 
-WelchEstimator::WelchEstimator(std::size_t segment_samples) : plan_(std::make_unique<Plan>()) {
+namespace {
+
+std::size_t checked_segment_samples(std::size_t segment_samples) {
   if (segment_samples < 2)
     throw Error({"post.psd", std::nullopt, "segment_samples", ""}, fmt::format("WelchEstimator: segment_samples = {} must be ≥ 2", segment_samples));
-  Plan& p = *plan_;
-  p.length = segment_samples;
-  p.window.resize(segment_samples);
+  return segment_samples;
+}
+
+}  // namespace
+
+WelchEstimator::WelchEstimator(std::size_t segment_samples)
+    : length_(checked_segment_samples(segment_samples)), window_(segment_samples), fft_(segment_samples) {
   for (std::size_t j = 0; j < segment_samples; ++j) {
-    p.window[j] = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(j) / static_cast<double>(segment_samples)));
-    p.window_power += p.window[j] * p.window[j];
+    window_[j] = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(j) / static_cast<double>(segment_samples)));
+    window_power_ += window_[j] * window_[j];
   }
-  p.segment = fftw_alloc_real(segment_samples);
-  p.transform = fftw_alloc_complex(segment_samples / 2 + 1);
-  p.plan = fftw_plan_dft_r2c_1d(static_cast<int>(segment_samples), p.segment, p.transform, FFTW_ESTIMATE);
 }
-
-WelchEstimator::~WelchEstimator() {
-  fftw_destroy_plan(plan_->plan);
-  fftw_free(plan_->transform);
-  fftw_free(plan_->segment);
-}
-
-std::size_t WelchEstimator::segment_samples() const { return plan_->length; }
 
 PowerSpectrum WelchEstimator::estimate(std::span<const double> values, double sample_rate_hz) const {
-  const Plan& p = *plan_;
-  const std::size_t length = p.length, bins = length / 2 + 1;
+  const std::size_t length = length_, bins = length / 2 + 1;
   if (values.size() < length || !(sample_rate_hz > 0.0))
     throw Error({"post.psd", std::nullopt, "values", ""},
                 fmt::format("WelchEstimator::estimate: values.size() = {} must be ≥ segment_samples = {} and "
@@ -82,13 +66,14 @@ PowerSpectrum WelchEstimator::estimate(std::span<const double> values, double sa
     double mean = 0.0;
     for (const double v : segment) mean += v;
     mean /= static_cast<double>(length);
-    for (std::size_t j = 0; j < length; ++j) p.segment[j] = p.window[j] * (segment[j] - mean);
-    fftw_execute(p.plan);
+    double* samples = fft_.samples();
+    for (std::size_t j = 0; j < length; ++j) samples[j] = window_[j] * (segment[j] - mean);
+    const std::complex<double>* transform = fft_.execute();
     for (std::size_t k = 0; k < bins; ++k)
-      spectrum.density[k] += p.transform[k][0] * p.transform[k][0] + p.transform[k][1] * p.transform[k][1];
+      spectrum.density[k] += transform[k].real() * transform[k].real() + transform[k].imag() * transform[k].imag();
     ++spectrum.segments;
   }
-  const double scale = 1.0 / (sample_rate_hz * p.window_power * static_cast<double>(spectrum.segments));
+  const double scale = 1.0 / (sample_rate_hz * window_power_ * static_cast<double>(spectrum.segments));
   for (std::size_t k = 0; k < bins; ++k) {
     // One-sided: the negative frequencies fold onto the positive ones, except DC and Nyquist.
     const bool unpaired = k == 0 || (length % 2 == 0 && k == length / 2);

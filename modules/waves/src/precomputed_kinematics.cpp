@@ -12,8 +12,8 @@
 #include <fmt/format.h>
 
 #include "depth_factors.hpp"
-#include "fft.hpp"
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/fft.hpp"
 #include "fowtsim/core/interpolation.hpp"
 
 namespace fowtsim::waves {
@@ -115,7 +115,7 @@ PrecomputedKinematics::PrecomputedKinematics(const WaveField& field, std::span<c
 
   const std::size_t n_comp = field.components().size();
   const auto components = field.components();
-  std::optional<detail::InverseRealFft> fft;
+  std::optional<InverseRealFft> fft;
   if (!field.calm()) fft.emplace(samples_);
   std::vector<std::complex<double>> base(n_comp);        // A_n e^{−i k_n s} / 2 for one column
   std::vector<detail::DepthFactors> factors(n_comp);     // at one level

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "fft.hpp"
+#include "fowtsim/core/fft.hpp"
 #include "fowtsim/core/interpolation.hpp"
 #include "synthesis.hpp"
 
@@ -19,7 +19,7 @@ PrecomputedResponse::PrecomputedResponse(const WaveField& field, std::span<const
   samples_ = field.record_samples() * oversampling;
   storage_.assign(channels_ * samples_, 0.0);
   if (field.calm()) return;
-  detail::InverseRealFft fft(samples_);
+  InverseRealFft fft(samples_);
   for (std::size_t c = 0; c < channels_; ++c)
     detail::synthesise(field, fft, 0.0, [&](const WaveComponent& w) { return transfers[c](w.omega_rad_s); },
                        storage_.data() + c * samples_, 1);

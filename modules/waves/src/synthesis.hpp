@@ -8,7 +8,7 @@
 #include <complex>
 #include <cstddef>
 
-#include "fft.hpp"
+#include "fowtsim/core/fft.hpp"
 #include "fowtsim/waves/wave_field.hpp"
 
 namespace fowtsim::waves::detail {

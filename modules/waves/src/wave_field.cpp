@@ -9,8 +9,8 @@
 #include <fmt/format.h>
 
 #include "depth_factors.hpp"
-#include "fft.hpp"
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/fft.hpp"
 #include "fowtsim/waves/dispersion.hpp"
 #include "fowtsim/waves/spectrum.hpp"
 #include "synthesis.hpp"
@@ -86,7 +86,7 @@ WaveField::WaveField(const WaveParams& p) : params_(p) {
     const ElevationRecord& record = *p.elevation_record;  // present: validate() checked it
     const RecordGrid grid = check_elevation_record(record);
     const std::size_t n_samples = grid.samples;
-    detail::ForwardRealFft fft(n_samples);
+    ForwardRealFft fft(n_samples);
     std::copy(record.elevation_m.begin(), record.elevation_m.end(), fft.samples());
     const std::complex<double>* x = fft.execute();  // X_n = Σ_j η_j e^{−2πi jn/N}
     const double n_double = static_cast<double>(n_samples);
@@ -203,7 +203,7 @@ std::vector<double> WaveField::elevation_series(double x, double y, std::size_t 
     throw InputError({"waves", std::nullopt, "oversampling", "use 1 or more"}, "oversampling must be >= 1");
   std::vector<double> series(samples_ * oversampling, 0.0);
   if (calm()) return series;
-  detail::InverseRealFft fft(series.size());
+  InverseRealFft fft(series.size());
   const double s = x * direction_.x() + y * direction_.y();
   detail::synthesise(*this, fft, s, [](const WaveComponent&) { return std::complex<double>(1.0, 0.0); },
                      series.data(), 1);

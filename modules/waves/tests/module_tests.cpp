@@ -1,9 +1,6 @@
-// The module contract (Wave1Elev …), the seed's load cases, and the FFTW smoke test.
+// The module contract (Wave1Elev …) and the seed's load cases.
 #include <cmath>
-#include <complex>
 #include <vector>
-
-#include <fftw3.h>
 
 #include <catch2/catch.hpp>
 
@@ -14,17 +11,6 @@
 using namespace waves_test;
 
 static_assert(fowtsim::Module<Waves>);
-
-TEST_CASE("FFTW smoke test: an inverse real FFT of one harmonic is a cosine", "[unit][waves]") {
-  const int n = 16;
-  std::vector<std::complex<double>> in(n / 2 + 1);
-  std::vector<double> out(n);
-  in[2] = {0.5, 0.0};
-  fftw_plan plan = fftw_plan_dft_c2r_1d(n, reinterpret_cast<fftw_complex*>(in.data()), out.data(), FFTW_ESTIMATE);
-  fftw_execute(plan);
-  fftw_destroy_plan(plan);
-  for (int j = 0; j < n; ++j) CHECK(out[j] == Approx(std::cos(2 * kPi * 2 * j / n)).margin(1e-15));
-}
 
 TEST_CASE("Waves module writes Wave1Elev at the deck's probes", "[unit][waves]") {
   WaveParams p = jonswap(6.0, 10.0, 3.3, 320.0, 600.0, 0.25, 8);

@@ -7,10 +7,9 @@
 #include <random>
 #include <vector>
 
-#include <fftw3.h>
-
 #include <catch2/catch.hpp>
 
+#include "fowtsim/core/fft.hpp"
 #include "fowtsim/waves/precomputed_kinematics.hpp"
 #include "fowtsim/waves/spectrum.hpp"
 #include "test_waves.hpp"
@@ -22,12 +21,9 @@ namespace {
 // One-sided periodogram [m²/Hz] of a real record of length D: P_n = 2 |Y_n|² / N² · D at f_n = n/D.
 std::vector<double> periodogram(const std::vector<double>& x, double duration) {
   const std::size_t n = x.size();
-  std::vector<double> in(x);
-  std::vector<std::complex<double>> out(n / 2 + 1);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(static_cast<int>(n), in.data(), reinterpret_cast<fftw_complex*>(out.data()),
-                                        FFTW_ESTIMATE);
-  fftw_execute(plan);
-  fftw_destroy_plan(plan);
+  fowtsim::ForwardRealFft fft(n);
+  std::copy(x.begin(), x.end(), fft.samples());
+  const std::complex<double>* out = fft.execute();
   std::vector<double> p(n / 2 + 1);
   for (std::size_t k = 0; k < p.size(); ++k) p[k] = 2.0 * std::norm(out[k]) / (double(n) * double(n)) * duration;
   return p;

@@ -1,14 +1,14 @@
 #include "fowtsim/wind/coherent_sampler.hpp"
 
-#include <fftw3.h>
-
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/fft.hpp"
 
 namespace fowtsim::wind {
 namespace {
@@ -28,8 +28,7 @@ struct CoherentSampler::Impl {
   int ny, nz;
   double dy, dz;
   int my, mz;                       // embedding sizes
-  fftw_complex* buffer = nullptr;   // My·Mz, z slow
-  fftw_plan plan = nullptr;         // forward 2-D DFT in place, FFTW_ESTIMATE: same algorithm every run
+  std::optional<ForwardComplexFft2d> fft;  // My·Mz values, z slow
   std::vector<double> root_lambda;  // sqrt(λ / (My Mz)) of the prepared embedding
   Eigen::MatrixXcd cholesky;        // L of the prepared dense case (real, kept complex for the product)
   Method method = Method::independent;
@@ -46,16 +45,11 @@ CoherentSampler::CoherentSampler(int ny, int nz, double dy_m, double dz_m) : imp
   s.dz = dz_m;
   s.my = fft_friendly(2 * (ny - 1));
   s.mz = fft_friendly(2 * (nz - 1));
-  s.buffer = fftw_alloc_complex(static_cast<std::size_t>(s.my) * s.mz);
-  if (s.buffer == nullptr) throw std::bad_alloc();
-  s.plan = fftw_plan_dft_2d(s.mz, s.my, s.buffer, s.buffer, FFTW_FORWARD, FFTW_ESTIMATE);
+  s.fft.emplace(s.mz, s.my);
   s.root_lambda.assign(static_cast<std::size_t>(s.my) * s.mz, 0.0);
 }
 
-CoherentSampler::~CoherentSampler() {
-  if (impl_->plan) fftw_destroy_plan(impl_->plan);
-  if (impl_->buffer) fftw_free(impl_->buffer);
-}
+CoherentSampler::~CoherentSampler() = default;
 
 std::size_t CoherentSampler::point_count() const { return static_cast<std::size_t>(impl_->ny) * impl_->nz; }
 std::size_t CoherentSampler::embedding_size() const { return static_cast<std::size_t>(impl_->my) * impl_->mz; }
@@ -69,26 +63,25 @@ CoherentSampler::Method CoherentSampler::prepare(double a) {
     return s.method = Method::independent;
   }
   // First row of the block-circulant embedding (periodic distances), then its eigenvalues.
+  std::complex<double>* buffer = s.fft->data();
   for (int iz = 0; iz < s.mz; ++iz) {
     const int diz = std::min(iz, s.mz - iz);
     for (int iy = 0; iy < s.my; ++iy) {
       const int diy = std::min(iy, s.my - iy);
-      fftw_complex& b = s.buffer[static_cast<std::size_t>(iz) * s.my + iy];
-      b[0] = std::exp(-a * s.distance(diy, diz));
-      b[1] = 0.0;
+      buffer[static_cast<std::size_t>(iz) * s.my + iy] = {std::exp(-a * s.distance(diy, diz)), 0.0};
     }
   }
-  fftw_execute(s.plan);
+  s.fft->execute();
   const std::size_t m = embedding_size();
   double lambda_max = 0.0, lambda_min = 0.0;
   for (std::size_t k = 0; k < m; ++k) {
-    lambda_max = std::max(lambda_max, s.buffer[k][0]);
-    lambda_min = std::min(lambda_min, s.buffer[k][0]);
+    lambda_max = std::max(lambda_max, buffer[k].real());
+    lambda_min = std::min(lambda_min, buffer[k].real());
   }
   // Negative eigenvalues beyond round-off: the embedding is not a covariance; use the dense way.
   if (lambda_min >= -1e-12 * lambda_max) {
     for (std::size_t k = 0; k < m; ++k)
-      s.root_lambda[k] = std::sqrt(std::max(s.buffer[k][0], 0.0) / static_cast<double>(m));
+      s.root_lambda[k] = std::sqrt(std::max(buffer[k].real(), 0.0) / static_cast<double>(m));
     return s.method = Method::embedding;
   }
   const int n = static_cast<int>(point_count());
@@ -120,16 +113,13 @@ void CoherentSampler::sample(std::span<const std::complex<double>> xi, std::span
       std::copy(xi.begin(), xi.end(), out.begin());
       return;
     case Method::embedding: {
-      for (std::size_t k = 0; k < embedding_size(); ++k) {
-        s.buffer[k][0] = s.root_lambda[k] * xi[k].real();
-        s.buffer[k][1] = s.root_lambda[k] * xi[k].imag();
-      }
-      fftw_execute(s.plan);
+      std::complex<double>* buffer = s.fft->data();
+      for (std::size_t k = 0; k < embedding_size(); ++k)
+        buffer[k] = {s.root_lambda[k] * xi[k].real(), s.root_lambda[k] * xi[k].imag()};
+      s.fft->execute();
       for (int iz = 0; iz < s.nz; ++iz)
-        for (int iy = 0; iy < s.ny; ++iy) {
-          const fftw_complex& b = s.buffer[static_cast<std::size_t>(iz) * s.my + iy];
-          out[static_cast<std::size_t>(iz) * s.ny + iy] = {b[0], b[1]};
-        }
+        for (int iy = 0; iy < s.ny; ++iy)
+          out[static_cast<std::size_t>(iz) * s.ny + iy] = buffer[static_cast<std::size_t>(iz) * s.my + iy];
       return;
     }
     case Method::dense: {

@@ -1,7 +1,5 @@
 #include "fowtsim/wind/turbulence_generator.hpp"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -9,6 +7,7 @@
 #include <vector>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/fft.hpp"
 #include "fowtsim/wind/coherent_sampler.hpp"
 #include "fowtsim/wind/iec_turbulence.hpp"
 #include "fowtsim/wind/tower_sampler.hpp"
@@ -22,40 +21,6 @@ Complex random_phasor(std::mt19937_64& generator) {
   const double theta = 2.0 * std::numbers::pi * uniform01(generator);
   return {std::cos(theta), std::sin(theta)};
 }
-
-// One real inverse DFT of length n with its own aligned buffers (FFTW_ESTIMATE: deterministic).
-class InverseRealFft {
- public:
-  explicit InverseRealFft(int n) : n_(n) {
-    spectrum_ = fftw_alloc_complex(static_cast<std::size_t>(n / 2 + 1));
-    signal_ = fftw_alloc_real(static_cast<std::size_t>(n));
-    if (!spectrum_ || !signal_) throw std::bad_alloc();
-    plan_ = fftw_plan_dft_c2r_1d(n, spectrum_, signal_, FFTW_ESTIMATE);
-  }
-  ~InverseRealFft() {
-    fftw_destroy_plan(plan_);
-    fftw_free(spectrum_);
-    fftw_free(signal_);
-  }
-  InverseRealFft(const InverseRealFft&) = delete;
-  InverseRealFft& operator=(const InverseRealFft&) = delete;
-
-  // signal[t] = Σ_k Y_k e^{+i 2π k t / n} over the Hermitian-extended spectrum (FFTW c2r).
-  const double* run(const Complex* y) {
-    for (int k = 0; k <= n_ / 2; ++k) {
-      spectrum_[k][0] = y[k].real();
-      spectrum_[k][1] = y[k].imag();
-    }
-    fftw_execute(plan_);
-    return signal_;
-  }
-
- private:
-  int n_;
-  fftw_complex* spectrum_ = nullptr;
-  double* signal_ = nullptr;
-  fftw_plan plan_ = nullptr;
-};
 
 }  // namespace
 
@@ -99,7 +64,12 @@ GeneratedTurbulence generate_turbulence(const WindParams& params) {
   std::vector<Complex> xi(std::max(sampler.embedding_size(), points));
   std::vector<Complex> x(points);
   std::vector<Complex> spectra(points * bins);  // [point][bin]
-  InverseRealFft inverse(n);
+  // signal[t] = Σ_k Y_k e^{+i 2π k t / n} over the Hermitian-extended spectrum Y_0 … Y_{n/2}.
+  InverseRealFft inverse(static_cast<std::size_t>(n));
+  const auto inverse_dft = [&inverse, bins](const Complex* y) {
+    std::copy(y, y + bins, inverse.coefficients());
+    return inverse.execute();
+  };
   // Tower points: their own stream, so that the grid's draws (hence values) do not change.
   std::mt19937_64 tower_generator(t.seed + 0x9E3779B97F4A7C15ULL);
   TowerSampler tower(f.ny, f.nz, f.dy_m, f.dz_m, f.n_tower);
@@ -155,7 +125,7 @@ GeneratedTurbulence generate_turbulence(const WindParams& params) {
     stats.expected_sigma_m_s[c] = std::sqrt(variance);
 
     for (std::size_t j = 0; j < points; ++j) {
-      const double* series = inverse.run(&spectra[j * bins]);
+      const double* series = inverse_dft(&spectra[j * bins]);
       const double mean = (c == 0) ? mean_u[j / f.ny] : 0.0;
       for (int it = 0; it < n; ++it) {
         const double value = mean + series[it];
@@ -168,7 +138,7 @@ GeneratedTurbulence generate_turbulence(const WindParams& params) {
         f.tower[(static_cast<std::size_t>(it) * nw) * 3 + c] =
             f.grid[(static_cast<std::size_t>(it) * points + tower.first_grid_index()) * 3 + c];
     for (std::size_t d = 0; d < tower_draws; ++d) {
-      const double* series = inverse.run(&tower_spectra[d * bins]);
+      const double* series = inverse_dft(&tower_spectra[d * bins]);
       const double mean = (c == 0) ? tower_mean_u[d] : 0.0;
       const std::size_t k = static_cast<std::size_t>(tower_first) + d;
       for (int it = 0; it < n; ++it)

@@ -7,23 +7,10 @@
 #include <utility>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/rotation.hpp"
 
 namespace fowtsim::wind {
 namespace {
-
-Mat3 rotation_z(double angle_rad) {
-  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
-  Mat3 r;
-  r << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
-  return r;
-}
-
-Mat3 rotation_y(double angle_rad) {
-  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
-  Mat3 r;
-  r << c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c;
-  return r;
-}
 
 bool uses_full_field(WindModel model) { return model == WindModel::bts || model == WindModel::turbulent; }
 

@@ -4,8 +4,6 @@
 
 #include "series_support.hpp"
 
-#include <fftw3.h>
-
 #include <cmath>
 #include <complex>
 #include <cstring>

@@ -1,11 +1,11 @@
 #pragma once
 // Helpers of the generator's statistical tests: a point's time series out of a generated grid and
-// its one-sided DFT (FFTW, as the generator itself uses).
+// its one-sided DFT (core's FFT, as the generator itself uses).
+#include <algorithm>
 #include <complex>
 #include <vector>
 
-#include <fftw3.h>
-
+#include "fowtsim/core/fft.hpp"
 #include "fowtsim/wind/full_field.hpp"
 
 namespace fowtsim::wind::test_support {
@@ -14,13 +14,10 @@ using Complex = std::complex<double>;
 
 // DFT_m of a real series, m = 0 … N/2.
 inline std::vector<Complex> dft(const std::vector<double>& series) {
-  const int n = static_cast<int>(series.size());
-  std::vector<double> in(series);
-  std::vector<Complex> out(n / 2 + 1);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(n, in.data(), reinterpret_cast<fftw_complex*>(out.data()), FFTW_ESTIMATE);
-  fftw_execute(plan);
-  fftw_destroy_plan(plan);
-  return out;
+  ForwardRealFft fft(series.size());
+  std::copy(series.begin(), series.end(), fft.samples());
+  const Complex* out = fft.execute();
+  return std::vector<Complex>(out, out + series.size() / 2 + 1);
 }
 
 // Component c (0 u, 1 v, 2 w) of grid point (iy, iz) over the whole record.

@@ -5,8 +5,6 @@
 
 #include "series_support.hpp"
 
-#include <fftw3.h>
-
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>

@@ -5,6 +5,8 @@
 // Notation (seed 000 §2.2.2): T_ab rotates components from frame b to frame a, v_a = T_ab v_b;
 // T_ba = T_ab^T. Angular velocities returned by body_* are resolved in the moving frame (the
 // frame the matrix rotates *from*), as Ω_f in eq. 2.2.
+#include <cmath>
+
 #include "fowtsim/core/types.hpp"
 
 namespace fowtsim {
@@ -21,6 +23,28 @@ inline Mat3 skew(const Vec3& a) {
 // ã b̃ = b aᵀ − (a·b) I: a product of two skew matrices without the 3×3 product.
 inline Mat3 skew_product(const Vec3& a, const Vec3& b) {
   return b * a.transpose() - a.dot(b) * Mat3::Identity();
+}
+
+// Elementary rotations T_ab by angle a about axis x, y or z of frame b (right-hand rule), from
+// one std::cos and one std::sin with exact 0 and 1 entries. Inline: the rotor places every blade
+// node through them at every step.
+inline Mat3 rotation_x(double angle_rad) {
+  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
+  Mat3 r;
+  r << 1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c;
+  return r;
+}
+inline Mat3 rotation_y(double angle_rad) {
+  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
+  Mat3 r;
+  r << c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c;
+  return r;
+}
+inline Mat3 rotation_z(double angle_rad) {
+  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
+  Mat3 r;
+  r << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
+  return r;
 }
 
 // Axial vector of the skew-symmetric part of m: axial(skew(a)) = a for every a.

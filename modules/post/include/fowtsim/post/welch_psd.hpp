@@ -9,9 +9,10 @@
 //
 // the same estimate as scipy.signal.welch(x, fs, window="hann", nperseg=L, detrend="constant").
 #include <cstddef>
-#include <memory>
 #include <span>
 #include <vector>
+
+#include "fowtsim/core/fft.hpp"
 
 namespace fowtsim::post {
 
@@ -36,22 +37,21 @@ double uniform_sample_rate_hz(std::span<const double> time_s);
 // and at most `samples` (a record shorter than one segment is one segment).
 std::size_t segment_samples_for(double segment_s, double sample_rate_hz, std::size_t samples);
 
-// Welch estimator for one segment length: the FFTW plan and buffers are made once and reused for
-// every channel of that length. Not copyable; estimate() is not thread-safe (it uses the buffers).
+// Welch estimator for one segment length: the window and the FFT buffers are made once and reused
+// for every channel of that length. Not copyable; estimate() is not thread-safe (it uses the buffers).
 class WelchEstimator {
  public:
   explicit WelchEstimator(std::size_t segment_samples);  // L ≥ 2
-  ~WelchEstimator();
-  WelchEstimator(const WelchEstimator&) = delete;
-  WelchEstimator& operator=(const WelchEstimator&) = delete;
 
-  std::size_t segment_samples() const;
+  std::size_t segment_samples() const { return length_; }
   // PSD of `values` (at least L samples) sampled at sample_rate_hz.
   PowerSpectrum estimate(std::span<const double> values, double sample_rate_hz) const;
 
  private:
-  struct Plan;  // keeps fftw3.h out of this header (FFTW is a private dependency)
-  std::unique_ptr<Plan> plan_;
+  std::size_t length_;         // L
+  std::vector<double> window_;  // periodic Hann, L values
+  double window_power_ = 0.0;   // Σ w_j²
+  mutable ForwardRealFft fft_;  // the segment's transform, buffers reused by every estimate()
 };
 
 // The `count` highest local maxima of the spectrum (P_k > P_{k−1} and P_k ≥ P_{k+1}), highest
