@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>
+
 namespace fowtsim::testing {
 
 // CTest runs each TEST_CASE in its own process and registers exit code 4 as "skipped"
@@ -26,9 +28,11 @@ inline std::filesystem::path shared_dir_or_skip() {
 
 inline std::filesystem::path source_dir() { return FOWTSIM_SOURCE_DIR; }
 
-// A fresh scratch directory for one test, under the build tree's working directory.
+// A fresh scratch directory for one test, under the build tree's working directory. The process id
+// keeps apart test cases of one executable that ctest runs at once under the same name (seen: two
+// flexible-rotor cases rewriting each other's deck while one read it).
 inline std::filesystem::path scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::current_path() / "test-scratch" / name;
+  const auto dir = std::filesystem::current_path() / "test-scratch" / (name + "." + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
