@@ -24,17 +24,19 @@ namespace {
 // The blades' held root loads and the blades' spin are all that acts on the multibody.
 class BladesOnly final : public multibody::LoadProvider {
  public:
-  BladesOnly(const multibody::Model& model, const TurbineBlades& blades) : model_(model), blades_(blades) {}
+  BladesOnly(const multibody::Model& model, const TurbineBlades& blades, const TurbineBlades::Data& data)
+      : model_(model), blades_(blades), data_(data) {}
   void loads(double, const multibody::State& s, multibody::AppliedLoads& out) override {
     out.gravity = false;
     multibody::chain_kinematics(model_, s, chain_);
-    blades_.add_stage_loads(chain_, out);
+    blades_.add_stage_loads(chain_, data_, out);
   }
-  multibody::SpinMotion rotor_spin(double t) override { return blades_.spin(t); }
+  multibody::SpinMotion rotor_spin(double t) override { return blades_.spin(t, data_); }
 
  private:
   const multibody::Model& model_;
   const TurbineBlades& blades_;
+  const TurbineBlades::Data& data_;
   multibody::ChainKinematics chain_;
 };
 
@@ -43,7 +45,8 @@ struct Totals {
   Vec3 momentum = Vec3::Zero();  // angular, about the origin of g
 };
 
-Totals totals(const multibody::Model& model, const multibody::State& state, const TurbineBlades& blades) {
+Totals totals(const multibody::Model& model, const multibody::State& state, const TurbineBlades& blades,
+              const TurbineBlades::Data& data) {
   const multibody::Invariants rigid = multibody::invariants(model, state, false);
   Totals t{rigid.kinetic_energy_J + rigid.potential_energy_J, rigid.angular_momentum_N_m_s};
   multibody::ChainKinematics chain;
@@ -56,8 +59,8 @@ Totals totals(const multibody::Model& model, const multibody::State& state, cons
   const FlexibleRotor& rotor = blades.rotor();
   const beam::BeamModel& blade = rotor.params().blade;
   for (int b = 0; b < kBlades; ++b) {
-    const BladeFrame f = rotor.frame(shaft, b);
-    const beam::BeamState& s = rotor.state().blades[b];
+    const BladeFrame f = rotor.frame(shaft, b, data.rotor.state);
+    const beam::BeamState& s = data.rotor.state.blades[b];
     t.energy += beam::strain_energy(blade, s);
     for (int n = 0; n < blade.node_count(); ++n) {
       const beam::NodeModel& node = blade.nodes[n];
@@ -97,7 +100,8 @@ Drift run(const std::string& mode, double dt_large, int substeps, double t_end) 
   const multibody::Model model = multibody::make_model(params);
   multibody::State state = multibody::Multibody::make_state(model);
   TurbineBlades blades(deck, model, nullptr);
-  BladesOnly provider(model, blades);
+  TurbineBlades::Data data = blades.make_data();
+  BladesOnly provider(model, blades, data);
   multibody::Evaluation evaluation;
   const TurbineBlades::ShaftAt shaft_at = [&](double t, const multibody::State& s) {
     multibody::AppliedLoads loads;
@@ -107,13 +111,13 @@ Drift run(const std::string& mode, double dt_large, int substeps, double t_end) 
   };
   RotorDemands demands;
   demands.gravity = false;
-  blades.start(shaft_at(0.0, state), state, 0.0, demands);
-  const Totals t0 = totals(model, state, blades);
+  blades.start(shaft_at(0.0, state), state, 0.0, demands, data, nullptr);
+  const Totals t0 = totals(model, state, blades, data);
   Drift d;
   const long steps = std::lround(t_end / dt_large);
   for (long k = 0; k < steps; ++k) {
-    blades.advance(provider, shaft_at, demands, k * dt_large, dt_large, state);
-    const Totals now = totals(model, state, blades);
+    blades.advance(provider, shaft_at, demands, k * dt_large, dt_large, state, data, nullptr);
+    const Totals now = totals(model, state, blades, data);
     d.energy = std::max(d.energy, std::abs(now.energy - t0.energy) / t0.energy);
     d.largest_energy_gain = std::max(d.largest_energy_gain, (now.energy - t0.energy) / t0.energy);
     d.momentum = std::max(d.momentum, (now.momentum - t0.momentum).norm() / t0.momentum.norm());

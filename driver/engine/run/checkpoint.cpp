@@ -33,9 +33,9 @@ CheckpointHeader read_checkpoint_header(std::ifstream& is, const std::filesystem
                      fmt::format("{}: cannot open the checkpoint", file.string()));
   char magic[11] = {};
   is.read(magic, 11);
-  if (!is || std::memcmp(magic, "FOWTSIMCHK2", 11) != 0)
+  if (!is || std::memcmp(magic, "FOWTSIMCHK3", 11) != 0)
     throw InputError({"checkpoint", std::nullopt, "--restart", "a fowtsim checkpoint (.chk)"},
-                     fmt::format("{}: not a fowtsim checkpoint of this version (format FOWTSIMCHK2)", file.string()));
+                     fmt::format("{}: not a fowtsim checkpoint of this version (format FOWTSIMCHK3)", file.string()));
   CheckpointReader r(is, file);
   CheckpointHeader h;
   r.get(h);

@@ -3,13 +3,17 @@
 // file, so that `fowtsim run DECK --restart FILE` continues bit-identically to an uninterrupted
 // run. Values are written as their bytes (doubles bit for bit); a header ties the file to the
 // deck (hash), the step and the time step, and the reader refuses anything else. Both archives
-// have io(x): a state type writes one `template <class Archive> void checkpoint(Archive&)` that
-// lists its fields once, for saving and loading alike, so the two can never disagree on order.
+// have io(x): a struct with a field list (core/fields.hpp: `fields(archive, value)`, found by
+// argument-dependent lookup) is written through it, anything else as its bytes; the one list serves
+// saving and loading alike, so the two can never disagree on order, and `state_bytes` compares.
 #include <array>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <sstream>
 #include <string>
+#include <variant>
 #include <type_traits>
 #include <vector>
 
@@ -19,11 +23,14 @@
 
 namespace fowtsim::driver {
 
+template <class Archive, class T>
+concept HasFieldList = requires(Archive& a, T& v) { fields(a, v); };
+
 class CheckpointWriter {
  public:
   explicit CheckpointWriter(std::ostream& os) : os_(os) {}
   template <class T>
-    requires std::is_trivially_copyable_v<T>
+    requires(std::is_trivially_copyable_v<T> && !HasFieldList<CheckpointWriter, T>)
   void put(const T& v) {
     os_.write(reinterpret_cast<const char*>(&v), sizeof(T));
   }
@@ -46,9 +53,25 @@ class CheckpointWriter {
     for (const T& x : a) put(x);
   }
   template <class T>
+  void put(const std::optional<T>& o) {  // present or not as the deck says: the same on both sides
+    if (o) put(*o);
+  }
+  template <class... T>
+  void put(const std::variant<T...>& v) {
+    put(static_cast<std::uint64_t>(v.index()));
+    std::visit([&](const auto& x) { put(x); }, v);
+  }
+  template <class T>
+    requires HasFieldList<CheckpointWriter, T>
+  void put(const T& v) {
+    fields(*this, const_cast<T&>(v));  // a field list names fields for reading and writing alike
+  }
+  template <class T>
   void io(const T& v) {
     put(v);
   }
+  template <class T>
+  void scratch(const T&) {}  // workspace: overwritten before it is read
 
  private:
   std::ostream& os_;
@@ -58,7 +81,7 @@ class CheckpointReader {
  public:
   CheckpointReader(std::istream& is, std::filesystem::path file) : is_(is), file_(std::move(file)) {}
   template <class T>
-    requires std::is_trivially_copyable_v<T>
+    requires(std::is_trivially_copyable_v<T> && !HasFieldList<CheckpointReader, T>)
   void get(T& v) {
     read(reinterpret_cast<char*>(&v), sizeof(T));
   }
@@ -92,9 +115,27 @@ class CheckpointReader {
     for (T& x : a) get(x);
   }
   template <class T>
+  void get(std::optional<T>& o) {
+    if (o) get(*o);
+  }
+  template <class... T>
+  void get(std::variant<T...>& v) {
+    std::uint64_t index = 0;
+    get(index);
+    if (index != v.index()) mismatch("a variant's alternative");
+    std::visit([&](auto& x) { get(x); }, v);
+  }
+  template <class T>
+    requires HasFieldList<CheckpointReader, T>
+  void get(T& v) {
+    fields(*this, v);
+  }
+  template <class T>
   void io(T& v) {
     get(v);
   }
+  template <class T>
+  void scratch(T&) {}
   [[noreturn]] void mismatch(const std::string& what) const;
 
  private:
@@ -102,6 +143,15 @@ class CheckpointReader {
   std::istream& is_;
   std::filesystem::path file_;
 };
+
+// The bytes a state's field lists write: two states are the same when these are.
+template <class State>
+std::string state_bytes(const State& state) {
+  std::ostringstream os;
+  CheckpointWriter w(os);
+  w.io(state);
+  return std::move(os).str();
+}
 
 struct CheckpointHeader {
   std::array<char, 40> deck_hash{};  // io::ValidatedDeck::hash(), zero-padded
@@ -116,7 +166,7 @@ void write_checkpoint(const std::filesystem::path& file, const CheckpointHeader&
   const std::filesystem::path tmp = file.string() + ".tmp";
   {
     std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
-    os.write("FOWTSIMCHK2", 11);  // 2: aero node results carry the unsteady inputs, RotorAero its states
+    os.write("FOWTSIMCHK3", 11);  // 3: the scene state through its field lists
     CheckpointWriter w(os);
     w.put(header);
     save(w);

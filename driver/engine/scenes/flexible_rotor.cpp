@@ -86,116 +86,121 @@ ShaftMotion interpolate(const ShaftMotion& a, const ShaftMotion& b, double x) {
   return m;
 }
 
-FlexibleRotor::FlexibleRotor(FlexibleRotorParams params, RotorAero* aero, const BladeAeroMap* map)
+FlexibleRotor::FlexibleRotor(FlexibleRotorParams params, const RotorAero* aero, const BladeAeroMap* map)
     : params_(std::move(params)), aero_(aero), map_(map) {
   if (params_.dynamics.integrator != beam::Integrator::generalized_alpha)
     throw InputError({"blades", std::nullopt, "integrator", "generalized_alpha"},
                      "flexible blades on the turbine need the generalized_alpha integrator (the rotor spin is solved "
                      "together with its step)");
   for (int b = 0; b < kBlades; ++b) {
-    state_.blades[b] = beam::make_state(params_.blade);
     steppers_[b] = std::make_unique<beam::DynamicStepper>(params_.blade, params_.dynamics);
     aero_loads_[b].assign(static_cast<std::size_t>(params_.blade.node_count()), Vec6::Zero());
     inputs_[b].node_loads.assign(static_cast<std::size_t>(params_.blade.node_count()), Vec6::Zero());
   }
 }
 
-BladeFrame FlexibleRotor::frame(const ShaftMotion& shaft, int blade) const {
+FlexibleRotor::Data FlexibleRotor::make_data() const {
+  Data d;
+  for (beam::BeamState& s : d.state.blades) s = beam::make_state(params_.blade);
+  return d;
+}
+
+BladeFrame FlexibleRotor::frame(const ShaftMotion& shaft, int blade, const FlexibleRotorState& state) const {
   SpinPose pose;
-  pose.azimuth = state_.spin.rotor_azimuth_rad;
-  pose.speed = state_.spin.rotor_speed_rad_s;
-  pose.acceleration = state_.spin.rotor_mean_acceleration_rad_s2;
-  pose.pitch = state_.pitch_rad;
-  pose.pitch_rate = state_.pitch_rate_rad_s;
-  pose.pitch_acceleration = state_.pitch_acceleration_rad_s2;
+  pose.azimuth = state.spin.rotor_azimuth_rad;
+  pose.speed = state.spin.rotor_speed_rad_s;
+  pose.acceleration = state.spin.rotor_mean_acceleration_rad_s2;
+  pose.pitch = state.pitch_rad;
+  pose.pitch_rate = state.pitch_rate_rad_s;
+  pose.pitch_acceleration = state.pitch_acceleration_rad_s2;
   return blade_frame(params_, shaft, pose, blade);
 }
 
 // Aerodynamic loads on the blades as they are now (explicit over the small step: the aero
 // loads depend on the deflection and its rate, not on the acceleration, so lagging them one
 // small step is not an added-mass exchange).
-void FlexibleRotor::evaluate_aero(double t, const ShaftMotion& shaft, bool solve_induction) {
+void FlexibleRotor::evaluate_aero(double t, const ShaftMotion& shaft, bool solve_induction, Data& d, RotorAero::Data* aero) {
   if (!aero_) return;
   std::array<BladeFrame, kBlades> frames;
   for (int b = 0; b < kBlades; ++b) {
-    frames[b] = frame(shaft, b);
-    map_->place(b, frames[b], state_.blades[b], aero_->placed_input());
+    frames[b] = frame(shaft, b, d.state);
+    map_->place(b, frames[b], d.state.blades[b], aero->input);
   }
   // The unsteady airfoil model's ω leaves out the spin's steady component along a coned or bent
   // blade's axis (as the rigid rotor does, RotorAero::evaluate): the static polars stand for it.
-  aero::Aero::Input& placed = aero_->placed_input();
-  const Vec3 spin = state_.spin.rotor_speed_rad_s * shaft.orientation.col(0);
+  aero::Aero::Input& placed = aero->input;
+  const Vec3 spin = d.state.spin.rotor_speed_rad_s * shaft.orientation.col(0);
   for (Eigen::Index c = 0; c < placed.node_pitch_rate_rad_s.size(); ++c)
     placed.node_pitch_rate_rad_s(c) -= spin.dot(placed.node_orientation[static_cast<std::size_t>(c)].col(2));
-  const Mat3 t_gh = shaft.orientation * rotation_matrix(Vec3(state_.spin.rotor_azimuth_rad, 0.0, 0.0));
-  aero_->evaluate_placed(t, shaft.apex_position_m, t_gh, state_.spin.rotor_speed_rad_s, state_.pitch_rad,
+  const Mat3 t_gh = shaft.orientation * rotation_matrix(Vec3(d.state.spin.rotor_azimuth_rad, 0.0, 0.0));
+  aero_->evaluate_placed(t, shaft.apex_position_m, t_gh, d.state.spin.rotor_speed_rad_s, d.state.pitch_rad,
                          shaft.tower_base_m, shaft.tower_axis,
-                         solve_induction ? aero::Induction::solve : aero::Induction::held);
-  aero_->advance_states_placed(t);  // unsteady airfoil / dynamic inflow states to t (if on)
-  for (int b = 0; b < kBlades; ++b) map_->distribute(b, frames[b], state_.blades[b], aero_->output(), aero_loads_[b]);
+                         solve_induction ? aero::Induction::solve : aero::Induction::held, *aero);
+  aero_->advance_states_placed(t, *aero);  // unsteady airfoil / dynamic inflow states to t (if on)
+  for (int b = 0; b < kBlades; ++b) map_->distribute(b, frames[b], d.state.blades[b], aero->output, aero_loads_[b]);
 }
 
 void FlexibleRotor::start(const ShaftMotion& shaft, double azimuth_rad, double rotor_speed_rad_s, double pitch_rad,
-                          const RotorDemands& demands, Start how) {
-  shaft_ = shaft;
-  state_.spin = SpinState{};
-  state_.spin.rotor_azimuth_rad = state_.spin.generator_azimuth_rad = azimuth_rad;
-  state_.spin.rotor_speed_rad_s = state_.spin.generator_speed_rad_s = rotor_speed_rad_s;
-  state_.pitch_rad.fill(pitch_rad);
-  state_.pitch_rate_rad_s.fill(0.0);
-  state_.pitch_acceleration_rad_s2.fill(0.0);
-  for (int b = 0; b < kBlades; ++b) state_.blades[b] = beam::make_state(params_.blade);
+                          const RotorDemands& demands, Start how, Data& d, RotorAero::Data* aero) {
+  d.shaft = shaft;
+  d.state.spin = SpinState{};
+  d.state.spin.rotor_azimuth_rad = d.state.spin.generator_azimuth_rad = azimuth_rad;
+  d.state.spin.rotor_speed_rad_s = d.state.spin.generator_speed_rad_s = rotor_speed_rad_s;
+  d.state.pitch_rad.fill(pitch_rad);
+  d.state.pitch_rate_rad_s.fill(0.0);
+  d.state.pitch_acceleration_rad_s2.fill(0.0);
+  for (int b = 0; b < kBlades; ++b) d.state.blades[b] = beam::make_state(params_.blade);
   const bool loads = how == Start::static_loads;
   const double gravity = demands.gravity && loads ? params_.gravity_m_s2 : 0.0;
   if (how != Start::undeformed) {
     // Static equilibrium under the steady frame motion (centrifugal), and with static_loads
     // gravity and the aero loads of the deflected blades: three passes of aero ↔ structure.
     for (int pass = 0; pass < (aero_ && loads ? 3 : 1); ++pass) {
-      if (loads) evaluate_aero(0.0, shaft);
+      if (loads) evaluate_aero(0.0, shaft, true, d, aero);
       for (int b = 0; b < kBlades; ++b) {
         beam::BeamInput in;
-        in.frame = in_f(frame(shaft, b), gravity);
+        in.frame = in_f(frame(shaft, b, d.state), gravity);
         if (loads) in.node_loads = aero_loads_[b];
         beam::StaticOptions options;
         options.load_steps = pass == 0 ? 5 : 1;
-        beam::solve_static(params_.blade, in, state_.blades[b], options);
+        beam::solve_static(params_.blade, in, d.state.blades[b], options);
       }
     }
   }
   // The blades start moving rigidly with their root frames: relative velocities zero; the first
   // dynamic step solves for the consistent acceleration.
-  for (beam::BeamState& s : state_.blades) {
+  for (beam::BeamState& s : d.state.blades) {
     for (Vec6& v : s.velocity) v.setZero();
     s.acceleration_valid = false;
     s.time_s = 0.0;
   }
-  state_.time_s = 0.0;
-  evaluate_aero(0.0, shaft);
-  last_ = root_loads(shaft);
+  d.state.time_s = 0.0;
+  evaluate_aero(0.0, shaft, true, d, aero);
+  d.last = root_loads(shaft, d.state);
 }
 
 // Trapezoidal rule on the linear actuator (A-stable, second order).
-void FlexibleRotor::advance_pitch(double dt, double command) {
+void FlexibleRotor::advance_pitch(double dt, double command, FlexibleRotorState& state) const {
   const double w = params_.pitch_natural_frequency_rad_s, z = params_.pitch_damping_ratio;
   Eigen::Matrix2d a;
   a << 0.0, 1.0, -w * w, -2.0 * z * w;
   const Eigen::Vector2d forcing(0.0, w * w * command);
   const Eigen::Matrix2d lhs_inverse = (Eigen::Matrix2d::Identity() - 0.5 * dt * a).inverse();
   for (int b = 0; b < kBlades; ++b) {
-    const Eigen::Vector2d x0(state_.pitch_rad[b], state_.pitch_rate_rad_s[b]);
+    const Eigen::Vector2d x0(state.pitch_rad[b], state.pitch_rate_rad_s[b]);
     const Eigen::Vector2d x1 = lhs_inverse * (x0 + 0.5 * dt * (a * x0) + dt * forcing);
-    state_.pitch_acceleration_rad_s2[b] = (x1[1] - x0[1]) / dt;
-    state_.pitch_rad[b] = x1[0];
-    state_.pitch_rate_rad_s[b] = x1[1];
+    state.pitch_acceleration_rad_s2[b] = (x1[1] - x0[1]) / dt;
+    state.pitch_rad[b] = x1[0];
+    state.pitch_rate_rad_s[b] = x1[1];
   }
 }
 
-FlexibleRotor::HubLoad FlexibleRotor::root_loads(const ShaftMotion& shaft) const {
-  const Mat3 t_gh = shaft.orientation * rotation_matrix(Vec3(state_.spin.rotor_azimuth_rad, 0.0, 0.0));
+FlexibleRotor::HubLoad FlexibleRotor::root_loads(const ShaftMotion& shaft, const FlexibleRotorState& state) const {
+  const Mat3 t_gh = shaft.orientation * rotation_matrix(Vec3(state.spin.rotor_azimuth_rad, 0.0, 0.0));
   Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
   for (int b = 0; b < kBlades; ++b) {
     Vec3 f, m;
-    about_apex(frame(shaft, b), beam::root_reaction(params_.blade, state_.blades[b]), f, m);
+    about_apex(frame(shaft, b, state), beam::root_reaction(params_.blade, state.blades[b]), f, m);
     force += f;
     moment += m;
   }
@@ -212,7 +217,8 @@ FlexibleRotor::HubLoad FlexibleRotor::root_loads(const ShaftMotion& shaft) const
 //                  N²J_g θ̈* + N J_g e·α_s = T_shaft − N T_gen,
 //                  T_shaft = k (ψ − θ)_{1−αf} + c (ψ̇ − θ̇)_{1−αf}
 // are linear in s: one or two scalar unknowns.
-void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const RotorDemands& demands, bool solve_induction) {
+void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const RotorDemands& demands, bool solve_induction, Data& d,
+                         RotorAero::Data* aero) {
   const double rho = params_.dynamics.spectral_radius;
   const double am = (2.0 * rho - 1.0) / (rho + 1.0), af = rho / (rho + 1.0);
   const double gamma = 0.5 - am + af, beta = 0.25 * (1.0 - am + af) * (1.0 - am + af);
@@ -220,11 +226,11 @@ void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const Ro
   const bool held = params_.spin == SpinMode::held;
   const bool flexible = params_.torsional_flexibility && !held;
 
-  evaluate_aero(t, shaft_, solve_induction);  // on the blades at the start of the step
-  advance_pitch(dt, demands.pitch_command_rad);
+  evaluate_aero(t, d.shaft, solve_induction, d, aero);  // on the blades at the start of the step
+  advance_pitch(dt, demands.pitch_command_rad, d.state);
 
   // The spin predicted at the balance time with s = 0.
-  SpinState& sp = state_.spin;
+  SpinState& sp = d.state.spin;
   auto predict = [&](double x0, double v0, double a0, double& x1, double& v1) {
     v1 = v0 + dt * a0;
     x1 = x0 + dt * v0 + 0.5 * dt * dt * a0;
@@ -236,9 +242,9 @@ void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const Ro
   pose.azimuth = (1.0 - af) * psi1 + af * sp.rotor_azimuth_rad;
   pose.speed = (1.0 - af) * psi_dot1 + af * sp.rotor_speed_rad_s;
   pose.acceleration = sp.rotor_acceleration_rad_s2;  // ψ̈* at s = 0
-  pose.pitch = state_.pitch_rad;
-  pose.pitch_rate = state_.pitch_rate_rad_s;
-  pose.pitch_acceleration = state_.pitch_acceleration_rad_s2;
+  pose.pitch = d.state.pitch_rad;
+  pose.pitch_rate = d.state.pitch_rate_rad_s;
+  pose.pitch_acceleration = d.state.pitch_acceleration_rad_s2;
 
   const Vec3 e = shaft.orientation.col(0);
   const double e_alpha = e.dot(shaft.angular_acceleration_rad_s2);
@@ -253,7 +259,7 @@ void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const Ro
       dir.angular_acceleration_rad_s2 = (1.0 - am) * (f.orientation.transpose() * e);
       dir.acceleration_m_s2 = (1.0 - am) * (f.orientation.transpose() * e.cross(f.arm_m));
     }
-    const beam::AffineRootLoad root = steppers_[b]->prepare(in, dir, dt, state_.blades[b]);
+    const beam::AffineRootLoad root = steppers_[b]->prepare(in, dir, dt, d.state.blades[b]);
     Vec3 force, moment;
     about_apex(f, root.at_zero, force, moment);
     tau0 += e.dot(moment);
@@ -292,8 +298,8 @@ void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const Ro
                          "non-finite rotor spin acceleration");
 
   // Every blade finishes or none does: all are checked before any moves.
-  for (int b = 0; b < kBlades; ++b) steppers_[b]->solve(held ? 0.0 : s_rotor, state_.blades[b]);
-  for (int b = 0; b < kBlades; ++b) steppers_[b]->commit(state_.blades[b]);
+  for (int b = 0; b < kBlades; ++b) steppers_[b]->solve(held ? 0.0 : s_rotor, d.state.blades[b]);
+  for (int b = 0; b < kBlades; ++b) steppers_[b]->commit(d.state.blades[b]);
 
   auto integrate = [&](double& x, double& v, double& a, double& mean, double s) {
     const double a1 = a + s;
@@ -307,50 +313,14 @@ void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const Ro
             s_rotor);
   integrate(sp.generator_azimuth_rad, sp.generator_speed_rad_s, sp.generator_acceleration_rad_s2,
             sp.generator_mean_acceleration_rad_s2, s_generator);
-  state_.time_s = t + dt;
+  d.state.time_s = t + dt;
 }
 
-namespace {
-
-template <class Archive>
-void beam_checkpoint(Archive& a, beam::BeamState& s) {
-  a.io(s.time_s);
-  a.io(s.position_m);
-  a.io(s.orientation);
-  a.io(s.velocity);
-  a.io(s.acceleration);
-  a.io(s.acceleration_valid);
-  for (auto* blocks : s.step_matrix.factored.storage()) a.io(*blocks);
-  a.io(s.step_matrix.valid);
-  a.io(s.step_matrix.age);
-  a.io(s.step_matrix.turned_rad);
-  a.io(s.step_matrix.weights);
-}
-
-}  // namespace
-
-template <class Archive>
-void FlexibleRotor::checkpoint(Archive& a) {
-  for (beam::BeamState& s : state_.blades) beam_checkpoint(a, s);
-  a.io(state_.spin);
-  a.io(state_.pitch_rad);
-  a.io(state_.pitch_rate_rad_s);
-  a.io(state_.pitch_acceleration_rad_s2);
-  a.io(state_.time_s);
-  for (Vec3* v : {&shaft_.apex_position_m, &shaft_.apex_velocity_m_s, &shaft_.apex_acceleration_m_s2,
-                  &shaft_.angular_velocity_rad_s, &shaft_.angular_acceleration_rad_s2, &shaft_.tower_base_m, &shaft_.tower_axis})
-    a.io(*v);
-  a.io(shaft_.orientation);
-  a.io(last_.force_h_N);
-  a.io(last_.moment_h_N_m);
-}
-template void FlexibleRotor::checkpoint(CheckpointWriter&);
-template void FlexibleRotor::checkpoint(CheckpointReader&);
-
-void FlexibleRotor::advance(double t, double dt, const SubstepMotion<ShaftMotion>& slow, const RotorDemands& demands) {
-  step(t, dt, slow.at(steppers_[0]->input_time_fraction()), demands, slow.i == 0 || params_.induction_every_small_step);
-  shaft_ = slow.at(1.0);
-  last_ = root_loads(shaft_);
+void FlexibleRotor::advance(double t, double dt, const SubstepMotion<ShaftMotion>& slow, const RotorDemands& demands, Data& d,
+                            RotorAero::Data* aero) {
+  step(t, dt, slow.at(steppers_[0]->input_time_fraction()), demands, slow.i == 0 || params_.induction_every_small_step, d, aero);
+  d.shaft = slow.at(1.0);
+  d.last = root_loads(d.shaft, d.state);
 }
 
 }  // namespace fowtsim::driver

@@ -28,11 +28,10 @@
 #include "fowtsim/beam/solvers.hpp"
 #include "fowtsim/multibody/kinematics.hpp"
 #include "fowtsim/multibody/model.hpp"
-#include "run/checkpoint.hpp"
+#include "scenes/rotor_aero.hpp"
 
 namespace fowtsim::driver {
 
-class RotorAero;
 class BladeAeroMap;
 
 inline constexpr int kBlades = 3;
@@ -114,16 +113,9 @@ struct RotorDemands {
 class FlexibleRotor {
  public:
   // `aero` and `map` may be null (no aerodynamics); they must outlive the rotor.
-  FlexibleRotor(FlexibleRotorParams params, RotorAero* aero, const BladeAeroMap* map);
+  FlexibleRotor(FlexibleRotorParams params, const RotorAero* aero, const BladeAeroMap* map);
   FlexibleRotor(const FlexibleRotor&) = delete;  // the steppers refer to params_.blade
   FlexibleRotor& operator=(const FlexibleRotor&) = delete;
-
-  // How the blades start, moving rigidly with their root frames: at their static solution under
-  // the frame motion, gravity and (if any) aerodynamics at t = 0; at the static solution under
-  // the frame motion alone (BeamDyn's QuasiStaticInit, as OpenFAST starts); or undeformed.
-  enum class Start { static_loads, centrifugal, undeformed };
-  void start(const ShaftMotion& shaft, double azimuth_rad, double rotor_speed_rad_s, double pitch_rad,
-             const RotorDemands& demands, Start how);
 
   // The blades' root loads on the hub, as a force at the apex and a moment about it, in the hub
   // frame h (kept in h so that the slow side turns them with the hub at every stage instead of
@@ -138,39 +130,83 @@ class FlexibleRotor {
     }
     friend HubLoad operator*(double w, const HubLoad& a) { return {w * a.force_h_N, w * a.moment_h_N_m}; }
   };
+  // What changes (a part of the scene state): the blades, spin and pitch, and the shaft motion and
+  // root loads at state.time_s (the first sample of the next large step).
+  struct Data {
+    FlexibleRotorState state;
+    ShaftMotion shaft;
+    HubLoad last;
+  };
+  Data make_data() const;  // undeformed blades at rest; start() sets them up
+
+  // How the blades start, moving rigidly with their root frames: at their static solution under
+  // the frame motion, gravity and (if any) aerodynamics at t = 0; at the static solution under
+  // the frame motion alone (BeamDyn's QuasiStaticInit, as OpenFAST starts); or undeformed.
+  // `aero` is the rotor aerodynamics' data (null without aerodynamics).
+  enum class Start { static_loads, centrifugal, undeformed };
+  void start(const ShaftMotion& shaft, double azimuth_rad, double rotor_speed_rad_s, double pitch_rad,
+             const RotorDemands& demands, Start how, Data& d, RotorAero::Data* aero);
+
   // One small step from t to t + dt (small step `slow.i` of `slow.n`) through the shaft motion
   // interpolated over the large step (coupling/multi_rate_scheduler.hpp). The inductions are
   // solved at its first small step, or at every one (FlexibleRotorParams).
-  void advance(double t, double dt, const SubstepMotion<ShaftMotion>& slow, const RotorDemands& demands);
+  void advance(double t, double dt, const SubstepMotion<ShaftMotion>& slow, const RotorDemands& demands, Data& d,
+               RotorAero::Data* aero);
 
-  // Root loads of all blades now (same form), the first sample of the next large step.
-  HubLoad hub_load() const { return last_; }
-  const FlexibleRotorState& state() const { return state_; }
-  // Writes (CheckpointWriter) or reads (CheckpointReader) everything that changes: state, shaft
-  // motion, last root loads.
-  template <class Archive>
-  void checkpoint(Archive& archive);
   const FlexibleRotorParams& params() const { return params_; }
-  // Motion of blade i's pitched root frame for the shaft motion and the current spin and pitch.
-  BladeFrame frame(const ShaftMotion& shaft, int blade) const;
-  const ShaftMotion& shaft() const { return shaft_; }
-  beam::BeamOutputs blade_outputs(int blade) const { return beam::beam_outputs(params_.blade, state_.blades[blade]); }
+  // Motion of blade i's pitched root frame for the shaft motion and the spin and pitch of `state`.
+  BladeFrame frame(const ShaftMotion& shaft, int blade, const FlexibleRotorState& state) const;
+  beam::BeamOutputs blade_outputs(int blade, const FlexibleRotorState& state) const {
+    return beam::beam_outputs(params_.blade, state.blades[blade]);
+  }
 
  private:
-  void evaluate_aero(double t, const ShaftMotion& shaft, bool solve_induction = true);
-  void step(double t, double dt, const ShaftMotion& shaft, const RotorDemands& demands, bool solve_induction);
-  void advance_pitch(double dt, double command);
-  HubLoad root_loads(const ShaftMotion& shaft) const;
+  void evaluate_aero(double t, const ShaftMotion& shaft, bool solve_induction, Data& d, RotorAero::Data* aero);
+  void step(double t, double dt, const ShaftMotion& shaft, const RotorDemands& demands, bool solve_induction, Data& d,
+            RotorAero::Data* aero);
+  void advance_pitch(double dt, double command, FlexibleRotorState& state) const;
+  HubLoad root_loads(const ShaftMotion& shaft, const FlexibleRotorState& state) const;
 
   FlexibleRotorParams params_;
-  RotorAero* aero_;
+  const RotorAero* aero_;
   const BladeAeroMap* map_;
-  FlexibleRotorState state_;
+  // Workspace of a small step (written before it is read; nothing in it crosses a step).
   std::array<std::unique_ptr<beam::DynamicStepper>, kBlades> steppers_;
   std::array<beam::BeamInput, kBlades> inputs_;
   std::array<std::vector<Vec6>, kBlades> aero_loads_;
-  ShaftMotion shaft_;
-  HubLoad last_;
 };
+
+// Field lists (core/fields.hpp).
+template <class Archive>
+void fields(Archive& a, FlexibleRotorState& s) {
+  a.io(s.blades);
+  a.io(s.spin);
+  a.io(s.pitch_rad);
+  a.io(s.pitch_rate_rad_s);
+  a.io(s.pitch_acceleration_rad_s2);
+  a.io(s.time_s);
+}
+template <class Archive>
+void fields(Archive& a, ShaftMotion& m) {
+  a.io(m.apex_position_m);
+  a.io(m.apex_velocity_m_s);
+  a.io(m.apex_acceleration_m_s2);
+  a.io(m.orientation);
+  a.io(m.angular_velocity_rad_s);
+  a.io(m.angular_acceleration_rad_s2);
+  a.io(m.tower_base_m);
+  a.io(m.tower_axis);
+}
+template <class Archive>
+void fields(Archive& a, FlexibleRotor::HubLoad& h) {
+  a.io(h.force_h_N);
+  a.io(h.moment_h_N_m);
+}
+template <class Archive>
+void fields(Archive& a, FlexibleRotor::Data& d) {
+  a.io(d.state);
+  a.io(d.shaft);
+  a.io(d.last);
+}
 
 }  // namespace fowtsim::driver

@@ -1,10 +1,9 @@
 #include "scenes/floating_scene.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <numbers>
-#include <optional>
-#include <type_traits>
-#include <variant>
 
 #include <fmt/format.h>
 
@@ -20,9 +19,6 @@
 #include "fowtsim/multibody/multibody.hpp"
 #include "run/channel_selection.hpp"
 #include "scenes/scene_runner.hpp"
-#include "scenes/rotor_aero.hpp"
-#include "scenes/sea_modules.hpp"
-#include "scenes/turbine_blades.hpp"
 
 namespace fowtsim::driver {
 namespace {
@@ -39,94 +35,54 @@ FrameMotion platform_motion(const multibody::State& s) {
   return m;
 }
 
-// The controller of the deck, built-in or external, behind one interface; it runs at the large
-// step (sample and hold) and its demands are held over the step.
-class Controller {
- public:
-  explicit Controller(ControllerParams params) : params_(std::move(params)) {
-    std::visit([&](const auto& p) { state_ = make_state_of(p); }, params_);
-  }
-  void advance(const control::ControllerInput& u, double t, double dt) {
-    std::visit(
-        [&](const auto& p) {
-          using P = std::decay_t<decltype(p)>;
-          if constexpr (std::is_same_v<P, control::BaselineParams>) {
-            control::BaselineController::advance(p, u, t, dt, std::get<control::BaselineState>(state_));
-            output_ = control::BaselineController::outputs(p, u, std::get<control::BaselineState>(state_));
-          } else {
-            control::ExternalController::advance(p, u, t, dt, std::get<control::ExternalController::State>(state_));
-            output_ = control::ExternalController::outputs(p, u, std::get<control::ExternalController::State>(state_));
-          }
-        },
-        params_);
-  }
-  const control::ControllerOutput& output() const { return output_; }
-  // A DISCON library's state lives in the library: only the built-in law can be checkpointed.
-  template <class Archive>
-  void checkpoint(Archive& a) {
-    a.io(std::get<control::BaselineState>(state_));
-    a.io(output_);
-  }
-  bool can_checkpoint() const { return std::holds_alternative<control::BaselineState>(state_); }
-  // The last call a DISCON library gets (status −1: it closes its files); nothing for the built-in law.
-  void finish(double t) {
-    if (auto* p = std::get_if<control::ExternalController::Params>(&params_))
-      control::ExternalController::finish(*p, t, std::get<control::ExternalController::State>(state_));
-  }
-
- private:
-  static control::BaselineState make_state_of(const control::BaselineParams& p) { return control::BaselineController::make_state(p); }
-  static control::ExternalController::State make_state_of(const control::ExternalController::Params& p) {
-    return control::ExternalController::make_state(p);
-  }
-  ControllerParams params_;
-  std::variant<control::BaselineState, control::ExternalController::State> state_;
-  control::ControllerOutput output_{};
-};
+}  // namespace
 
 // The loads on the structure at any Runge–Kutta stage: the sea (hydro with its added mass, and
 // mooring) at the stage pose, the rotor aerodynamics at the stage configuration (when the deck has
-// `aero`), and the generator torque and blade pitch held over the large step.
-class StageLoads final : public multibody::LoadProvider {
+// `aero`), and the generator torque and blade pitch held over the large step. It acts on the parts
+// of one state that act_on() names (a step's state, or a row's copies).
+class FloatingScene::StageLoads final : public multibody::LoadProvider {
  public:
-  StageLoads(const multibody::Model& model, SeaModules& sea, RotorAero* rotor, const TurbineBlades* blades)
+  StageLoads(const multibody::Model& model, const SeaModules& sea, const RotorAero* rotor, const TurbineBlades* blades)
       : model_(model), sea_(sea), rotor_(rotor), blades_(blades) {}
-  void hold(double generator_torque_N_m, double pitch_rad) {
-    generator_torque_ = generator_torque_N_m;
-    pitch_ = pitch_rad;
+  void act_on(const HeldDemands& held, SeaModules::Data& sea, RotorAero::Data* aero, const TurbineBlades::Data* blades) {
+    held_ = &held;
+    sea_data_ = &sea;
+    aero_data_ = aero;
+    blades_data_ = blades;
   }
-  double pitch_rad() const { return pitch_; }
-  double generator_torque_held_N_m() const { return generator_torque_; }
   void loads(double t, const multibody::State& s, multibody::AppliedLoads& out) override {
-    sea_.evaluate(t, platform_motion(s));
-    const Vec6 load = sea_.platform_load();
+    sea_.evaluate(t, platform_motion(s), *sea_data_);
+    const Vec6 load = sea_.platform_load(*sea_data_);
     out.platform_force_N += load.head<3>();
     out.platform_moment_N_m += load.tail<3>();
-    out.platform_added_mass = sea_.added_mass();
-    out.generator_torque_N_m = generator_torque_;
+    out.platform_added_mass = sea_.added_mass(*sea_data_);
+    out.generator_torque_N_m = held_->generator_torque_N_m;
     if (blades_) {  // flexible blades: their held root loads, aerodynamics included
       multibody::chain_kinematics(model_, s, chain_);
-      blades_->add_stage_loads(chain_, out);
+      blades_->add_stage_loads(chain_, *blades_data_, out);
     } else if (rotor_) {
       multibody::chain_kinematics(model_, s, chain_);
-      rotor_->evaluate(t, chain_, s.rotor_speed_rad_s, pitch_);
-      out.rotor_force_N = rotor_->force_N();
-      out.rotor_moment_N_m = rotor_->moment_N_m();
+      rotor_->evaluate(t, chain_, s.rotor_speed_rad_s, held_->pitch_rad, *aero_data_);
+      out.rotor_force_N = aero_data_->force_N;
+      out.rotor_moment_N_m = aero_data_->moment_N_m;
     }
   }
-  multibody::SpinMotion rotor_spin(double t) override { return blades_ ? blades_->spin(t) : multibody::SpinMotion{}; }
-  double generator_torque_N_m() const { return generator_torque_; }
+  multibody::SpinMotion rotor_spin(double t) override {
+    return blades_ ? blades_->spin(t, *blades_data_) : multibody::SpinMotion{};
+  }
 
  private:
   const multibody::Model& model_;
-  SeaModules& sea_;
-  RotorAero* rotor_;
+  const SeaModules& sea_;
+  const RotorAero* rotor_;
   const TurbineBlades* blades_;
-  multibody::ChainKinematics chain_;
-  double generator_torque_ = 0.0, pitch_ = 0.0;
+  const HeldDemands* held_ = nullptr;
+  SeaModules::Data* sea_data_ = nullptr;
+  RotorAero::Data* aero_data_ = nullptr;
+  const TurbineBlades::Data* blades_data_ = nullptr;
+  multibody::ChainKinematics chain_;  // workspace
 };
-
-}  // namespace
 
 Schema floating_scene_schema() {
   return Schema::map({
@@ -144,197 +100,230 @@ Schema floating_scene_schema() {
   });
 }
 
-RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress) {
-  const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), request.deck_path);
-  multibody::Params structure = structure_params(deck.section("structure"));
-  if (deck.has("blades")) TurbineBlades::configure(structure);
-  const multibody::Model model = located(deck.section("structure"), [&] { return multibody::make_model(structure); });
+FloatingScene::FloatingScene(const io::ValidatedDeck& deck) : structure_(structure_params(deck.section("structure"))) {
+  if (deck.has("blades")) TurbineBlades::configure(structure_);
+  model_ = located(deck.section("structure"), [&] { return multibody::make_model(structure_); });
   if (deck.has("aero") && (!deck.has("airfoils") || !deck.has("wind")))
     throw InputError({"floating", std::nullopt, "aero", "airfoils and wind sections"},
                      where(deck, "aero") + ": rotor aerodynamics need the `airfoils` and `wind` sections too");
-  if (structure.rotor.flexible_blades && !deck.has("blades"))
+  if (structure_.rotor.flexible_blades && !deck.has("blades"))
     throw InputError({"floating", std::nullopt, "structure.rotor.flexible_blades", "a blades section"},
                      where(deck, "structure.rotor.flexible_blades") + ": flexible blades need the `blades` section (their structure)");
-  multibody::State state = multibody::Multibody::make_state(model);
-  SeaModules sea(deck, platform_motion(state), deck.number("simulation.dt_s"));
-  std::optional<RotorAero> rotor;
+  const multibody::State initial = multibody::Multibody::make_state(model_);
+  sea_.emplace(deck, platform_motion(initial), deck.number("simulation.dt_s"));
   if (deck.has("aero")) {
-    rotor.emplace(deck, structure);
+    rotor_.emplace(deck, structure_);
     // One rotor, two descriptions: the aero blade table and the structure must agree on it.
-    const aero::Params& ap = rotor->params();
-    if (ap.number_of_blades != structure.rotor.blade_count)
+    const aero::Params& ap = rotor_->params();
+    if (ap.number_of_blades != structure_.rotor.blade_count)
       throw InputError({"floating", std::nullopt, "aero.number_of_blades", "structure.rotor.blade_count"},
                        where(deck, "aero.number_of_blades") + fmt::format(": {} blades, the structure has {}", ap.number_of_blades,
-                                                                          structure.rotor.blade_count));
-    const double tip = structure.rotor.hub_radius_m + ap.blade.back().span_m;
-    if (std::abs(tip / structure.rotor.tip_radius_m - 1.0) > 1e-3)
+                                                                          structure_.rotor.blade_count));
+    const double tip = structure_.rotor.hub_radius_m + ap.blade.back().span_m;
+    if (std::abs(tip / structure_.rotor.tip_radius_m - 1.0) > 1e-3)
       throw InputError({"floating", std::nullopt, "aero.blade.nodes", "the structure's tip radius"},
                        where(deck, "aero.blade.nodes") + fmt::format(": hub radius + last span = {:.4g} m, the structure's tip radius is {:.4g} m",
-                                                                     tip, structure.rotor.tip_radius_m));
+                                                                     tip, structure_.rotor.tip_radius_m));
   }
-  std::optional<Controller> controller;
-  double overspeed_rad_s = 0.0;  // 30 % above the built-in law's rated rotor speed (0: unknown)
   if (deck.has("controller")) {
     ControllerParams cp = controller_params(deck.section("controller"));
     if (const auto* b = std::get_if<control::BaselineParams>(&cp))
-      overspeed_rad_s = 1.3 * b->rated_generator_speed_rad_s / structure.drivetrain.gearbox_ratio;
-    controller.emplace(std::move(cp));
+      overspeed_rad_s_ = 1.3 * b->rated_generator_speed_rad_s / structure_.drivetrain.gearbox_ratio;
+    controller_.emplace(std::move(cp));
   }
-  std::optional<TurbineBlades> blades;
-  if (deck.has("blades")) blades.emplace(deck, model, rotor ? &*rotor : nullptr);
-  StageLoads stage_loads(model, sea, rotor ? &*rotor : nullptr, blades ? &*blades : nullptr);
-  const double initial_pitch = deck.has("structure.initial_conditions")
-                                   ? deck.number("structure.initial_conditions.blade_pitch_deg") * std::numbers::pi / 180.0
-                                   : 0.0;
-  stage_loads.hold(0.0, initial_pitch);
-  // The shaft motion (non-rotating) of a multibody state at time t, under the stage loads.
-  multibody::Evaluation evaluation;
-  auto shaft_at = [&](double t, const multibody::State& s) {
-    multibody::AppliedLoads loads;
-    stage_loads.loads(t, s, loads);
-    multibody::evaluate(model, s, loads, t, evaluation);
-    return shaft_motion(evaluation.kinematics, evaluation.acceleration);
-  };
-  auto demands = [&] {
-    RotorDemands d;
-    d.generator_torque_N_m = stage_loads.generator_torque_N_m();
-    d.pitch_command_rad = stage_loads.pitch_rad();
-    return d;
-  };
-  if (blades) blades->start(shaft_at(0.0, state), state, initial_pitch, demands());
+  if (deck.has("blades")) blades_.emplace(deck, model_, rotor_ ? &*rotor_ : nullptr);
+  stage_loads_ = std::make_unique<StageLoads>(model_, *sea_, rotor_ ? &*rotor_ : nullptr, blades_ ? &*blades_ : nullptr);
+  if (deck.has("structure.initial_conditions"))
+    initial_pitch_rad_ = deck.number("structure.initial_conditions.blade_pitch_deg") * std::numbers::pi / 180.0;
 
-  std::vector<ChannelInfo> all = multibody::Multibody::channels(model);
-  const std::size_t sea_first = all.size();
-  for (const ChannelInfo& c : sea.channels()) all.push_back(c);
-  const std::size_t rotor_first = all.size();
-  if (rotor)
-    for (const ChannelInfo& c : rotor->channels()) all.push_back(c);
-  const std::size_t blades_first = all.size();
-  if (blades)
-    for (const ChannelInfo& c : blades->channels()) all.push_back(c);
-  const std::size_t controller_first = all.size();
-  if (controller)  // GenTq, GenPwr, BldPitch1–3; GenSpeed comes from the multibody
-    for (const ChannelInfo& c : control::controller_channels("control"))
-      if (c.name != "GenSpeed") all.push_back(c);
-  const std::vector<std::size_t> picked = select_channels(deck, all, "floating");
+  // Channels in module order; the controller's GenSpeed comes from the multibody.
+  auto add_block = [&](Block& block, const std::vector<ChannelInfo>& channels) {
+    block.first = all_.size();
+    block.count = channels.size();
+    all_.insert(all_.end(), channels.begin(), channels.end());
+  };
+  add_block(body_block_, multibody::Multibody::channels(model_));
+  add_block(sea_block_, sea_->channels());
+  if (rotor_) add_block(rotor_block_, rotor_->channels());
+  if (blades_) add_block(blades_block_, blades_->channels());
+  if (controller_) {
+    const std::vector<ChannelInfo> c = control::controller_channels("control");
+    std::vector<ChannelInfo> kept;
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      if (c[k].name == "GenSpeed") continue;
+      kept.push_back(c[k]);
+      controller_source_.push_back(k);
+    }
+    add_block(controller_block_, kept);
+  }
+  picked_ = select_channels(deck, all_, "floating");
+  for (std::size_t i : picked_) {
+    written_.push_back(all_[i]);
+    for (Block* b : {&body_block_, &sea_block_, &rotor_block_, &blades_block_, &controller_block_})
+      if (i >= b->first && i < b->first + b->count) b->written = true;
+  }
+  values_.assign(all_.size(), 0.0);
 
-  std::vector<std::string> input_warnings = sea.warnings();
-  if (rotor && rotor->params().number_of_blades > 0) {
-    const wind::WindParams& w = rotor->wind().params();
+  input_warnings_ = sea_->warnings();
+  if (rotor_ && rotor_->params().number_of_blades > 0) {
+    const wind::WindParams& w = rotor_->wind().params();
     // NREL 5MW cut-out 25 m/s (the controller has no shutdown): a spinning rotor above it.
-    if (w.speed_m_s > 25.0 && structure.initial_conditions.rotor_speed_rpm != 0.0)
-      input_warnings.push_back(fmt::format("wind {:.3g} m/s beyond the 25 m/s cut-out with the rotor spinning (the controller "
-                                           "does not shut the turbine down)", w.speed_m_s));
+    if (w.speed_m_s > 25.0 && structure_.initial_conditions.rotor_speed_rpm != 0.0)
+      input_warnings_.push_back(fmt::format("wind {:.3g} m/s beyond the 25 m/s cut-out with the rotor spinning (the controller "
+                                            "does not shut the turbine down)", w.speed_m_s));
   }
-  double max_rotor_speed = std::abs(state.rotor_speed_rad_s);
-  FixedStepScene scene;
-  for (std::size_t i : picked) scene.written.push_back(all[i]);
-  scene.metadata.seeds = sea.seeds();
-  if (rotor && rotor->wind().params().model == wind::WindModel::turbulent)
-    scene.metadata.seeds.push_back(rotor->wind().params().turbulence.seed);
-  scene.metadata.extra = {{"scene", "floating"}};
-  std::vector<double> values(all.size());
-  const double gearbox = structure.drivetrain.gearbox_ratio;
-  scene.step = [&](double t, double dt) {
-    if (controller) {
-      control::ControllerInput u;
-      u.generator_speed_rad_s = gearbox * state.generator_speed_rad_s;
-      u.rotor_speed_rad_s = state.rotor_speed_rad_s;
-      u.blade_pitch_rad.fill(stage_loads.pitch_rad());
-      if (rotor) u.hub_wind_speed_m_s = rotor->probe_wind(t).x();
-      controller->advance(u, t, dt);
-      stage_loads.hold(controller->output().generator_torque_N_m, controller->output().blade_pitch_rad[0]);
-    }
-    if (!blades) {
-      multibody::Multibody::advance(model, stage_loads, t, dt, state);
-      if (rotor) rotor->advance_states(model, state, t + dt, stage_loads.pitch_rad());  // UA/DBEMT, if on
-    } else {
-      blades->advance(stage_loads, shaft_at, demands(), t, dt, state);
-    }
-    sea.advance(t + dt, platform_motion(state));
-    max_rotor_speed = std::max(max_rotor_speed, std::abs(state.rotor_speed_rad_s));
-  };
-  SeaModules::Memory sea_memory;
-  std::vector<aero::NodeResult> aero_memory;
-  scene.row = [&](double t, std::span<double> row) {
-    // The row's own evaluation must leave the solvers' warm starts as the step left them.
-    sea_memory = sea.memory();
-    if (rotor) rotor->save_memory(aero_memory);
-    multibody::AppliedLoads loads;
-    stage_loads.loads(t, state, loads);
-    const multibody::Output mo = multibody::Multibody::outputs(model, loads, state, t);
-    std::copy(mo.channels.begin(), mo.channels.end(), values.begin());
-    const std::span<double> v(values);
-    sea.channel_values(t, v.subspan(sea_first));
-    if (rotor) rotor->channel_values(t, v.subspan(rotor_first));
-    if (blades) blades->channel_values(v.subspan(blades_first));
-    if (controller) {
-      std::array<double, 6> c{};
-      control::controller_channel_values(controller->output(), c);
-      std::copy(c.begin(), c.begin() + 5, v.begin() + static_cast<long>(controller_first));
-    }
-    for (std::size_t k = 0; k < picked.size(); ++k) row[k] = values[picked[k]];
-    sea.restore(sea_memory);
-    if (rotor) rotor->restore_memory(aero_memory);
-  };
-  // Checkpoints: the scene's whole changing state (the wind field and the sea are rebuilt from the
-  // deck, identically).
-  if (!controller || controller->can_checkpoint()) {
-    // One list of fields for saving and loading (run/checkpoint.hpp); setters run on save too,
-    // with the values they already hold.
-    const auto transfer = [&](auto& a) {
-      a.io(state.position_m);
-      a.io(state.orientation);
-      a.io(state.velocity_m_s);
-      a.io(state.angular_velocity_rad_s);
-      for (double* x : {&state.rotor_azimuth_rad, &state.rotor_speed_rad_s, &state.generator_azimuth_rad,
-                        &state.generator_speed_rad_s, &state.rotor_acceleration_rad_s2, &state.generator_acceleration_rad_s2,
-                        &state.nacelle_yaw_rad, &state.nacelle_yaw_rate_rad_s, &state.nacelle_yaw_acceleration_rad_s2})
-        a.io(*x);
-      double torque = stage_loads.generator_torque_held_N_m(), pitch = stage_loads.pitch_rad();
-      a.io(torque);
-      a.io(pitch);
-      stage_loads.hold(torque, pitch);
-      if (controller) controller->checkpoint(a);
-      sea.checkpoint(a);
-      if (rotor) rotor->checkpoint(a);
-      if (blades) blades->checkpoint(a);
-    };
-    scene.save = [transfer](CheckpointWriter& w) { transfer(w); };
-    scene.load = [transfer](CheckpointReader& r) { transfer(r); };
+  if (deck.has("hydro") || deck.has("mooring"))
+    sea_description_ = std::string(deck.has("hydro") ? "hydro" : "") + (deck.has("hydro") && deck.has("mooring") ? " + " : "") +
+                       (deck.has("mooring") ? "mooring" : "") + (deck.has("waves") ? " in waves" : " in still water") +
+                       " at every RK4 stage";
+}
+
+FloatingScene::~FloatingScene() = default;
+
+// The shaft motion (non-rotating) of a multibody state at time t, under the stage loads of the
+// state stage_loads_ acts on.
+ShaftMotion FloatingScene::shaft_at(double t, const multibody::State& body) {
+  multibody::AppliedLoads loads;
+  stage_loads_->loads(t, body, loads);
+  multibody::evaluate(model_, body, loads, t, evaluation_);
+  return shaft_motion(evaluation_.kinematics, evaluation_.acceleration);
+}
+
+RotorDemands FloatingScene::demands(const FloatingState& s) const {
+  RotorDemands d;
+  d.generator_torque_N_m = s.held.generator_torque_N_m;
+  d.pitch_command_rad = s.held.pitch_rad;
+  return d;
+}
+
+FloatingState FloatingScene::make_state() {
+  FloatingState s;
+  s.body = multibody::Multibody::make_state(model_);
+  s.held = {0.0, initial_pitch_rad_};
+  if (controller_) s.controller = controller_->make_data();
+  s.sea = sea_->initial_data();
+  if (rotor_) s.aero = rotor_->make_data();
+  if (blades_) {
+    s.blades = blades_->make_data();
+    stage_loads_->act_on(s.held, s.sea, s.aero ? &*s.aero : nullptr, &*s.blades);
+    blades_->start(shaft_at(0.0, s.body), s.body, initial_pitch_rad_, demands(s), *s.blades, s.aero ? &*s.aero : nullptr);
   }
-  scene.warnings = [&](std::vector<std::string>& warnings) {
-    for (const std::string& w : input_warnings) warnings.push_back(w);
-    if (overspeed_rad_s > 0.0 && max_rotor_speed > overspeed_rad_s)
-      warnings.push_back(fmt::format("rotor overspeed: {:.3g} rpm, more than 30 % above the controller's rated {:.3g} rpm",
-                                     max_rotor_speed * 30.0 / std::numbers::pi, overspeed_rad_s / 1.3 * 30.0 / std::numbers::pi));
-    if (rotor && rotor->wind().outside_queries() > 0)
-      warnings.push_back(fmt::format("{} wind queries fell outside the turbulence grid (deflected tips or a displaced "
-                                     "rotor beyond its edge) and took the mean wind profile there",
-                                     rotor->wind().outside_queries()));
+  s.max_rotor_speed_rad_s = std::abs(s.body.rotor_speed_rad_s);
+  row_sea_ = s.sea;  // sized once: a row copies into them without allocating
+  row_aero_ = s.aero;
+  return s;
+}
+
+void FloatingScene::step(double t, double dt, FloatingState& s) {
+  if (controller_) {
+    control::ControllerInput u;
+    u.generator_speed_rad_s = structure_.drivetrain.gearbox_ratio * s.body.generator_speed_rad_s;
+    u.rotor_speed_rad_s = s.body.rotor_speed_rad_s;
+    u.blade_pitch_rad.fill(s.held.pitch_rad);
+    if (rotor_) u.hub_wind_speed_m_s = rotor_->probe_wind(t).x();
+    controller_->advance(u, t, dt, *s.controller);
+    s.held = {s.controller->output.generator_torque_N_m, s.controller->output.blade_pitch_rad[0]};
+  }
+  RotorAero::Data* aero = s.aero ? &*s.aero : nullptr;
+  stage_loads_->act_on(s.held, s.sea, aero, s.blades ? &*s.blades : nullptr);
+  if (!blades_) {
+    multibody::Multibody::advance(model_, *stage_loads_, t, dt, s.body);
+    if (rotor_) rotor_->advance_states(model_, s.body, t + dt, s.held.pitch_rad, *aero);  // UA/DBEMT, if on
+  } else {
+    blades_->advance(*stage_loads_, [this](double tt, const multibody::State& b) { return shaft_at(tt, b); }, demands(s), t,
+                     dt, s.body, *s.blades, aero);
+  }
+  sea_->advance(t + dt, platform_motion(s.body), s.sea);
+  s.max_rotor_speed_rad_s = std::max(s.max_rotor_speed_rad_s, std::abs(s.body.rotor_speed_rad_s));
+}
+
+void FloatingScene::row(double t, const FloatingState& s, std::span<double> out) {
+  // The row's own evaluation of the sea (and of a rigid rotor) works on copies: the state's warm
+  // starts stay as the step left them.
+  row_sea_ = s.sea;
+  if (rotor_ && !blades_) *row_aero_ = *s.aero;
+  const RotorAero::Data* aero = blades_ ? (s.aero ? &*s.aero : nullptr) : (row_aero_ ? &*row_aero_ : nullptr);
+  stage_loads_->act_on(s.held, row_sea_, row_aero_ ? &*row_aero_ : nullptr, s.blades ? &*s.blades : nullptr);
+  multibody::AppliedLoads loads;
+  stage_loads_->loads(t, s.body, loads);
+  const std::span<double> v(values_);
+  if (body_block_.written) {
+    const multibody::Output mo = multibody::Multibody::outputs(model_, loads, s.body, t);
+    std::copy(mo.channels.begin(), mo.channels.end(), v.begin());
+  }
+  if (sea_block_.written) sea_->channel_values(t, row_sea_, v.subspan(sea_block_.first, sea_block_.count));
+  if (rotor_block_.written) rotor_->channel_values(t, *aero, v.subspan(rotor_block_.first, rotor_block_.count));
+  if (blades_block_.written) blades_->channel_values(*s.blades, v.subspan(blades_block_.first, blades_block_.count));
+  if (controller_block_.written) {
+    std::array<double, 6> c{};
+    control::controller_channel_values(s.controller->output, c);
+    for (std::size_t k = 0; k < controller_source_.size(); ++k) v[controller_block_.first + k] = c[controller_source_[k]];
+  }
+  for (std::size_t k = 0; k < picked_.size(); ++k) out[k] = values_[picked_[k]];
+}
+
+std::vector<std::uint64_t> FloatingScene::seeds() const {
+  std::vector<std::uint64_t> seeds = sea_->seeds();
+  if (rotor_ && rotor_->wind().params().model == wind::WindModel::turbulent) seeds.push_back(rotor_->wind().params().turbulence.seed);
+  return seeds;
+}
+
+std::vector<std::string> FloatingScene::warnings(const FloatingState& s) const {
+  std::vector<std::string> warnings = input_warnings_;
+  if (overspeed_rad_s_ > 0.0 && s.max_rotor_speed_rad_s > overspeed_rad_s_)
+    warnings.push_back(fmt::format("rotor overspeed: {:.3g} rpm, more than 30 % above the controller's rated {:.3g} rpm",
+                                   s.max_rotor_speed_rad_s * 30.0 / std::numbers::pi, overspeed_rad_s_ / 1.3 * 30.0 / std::numbers::pi));
+  if (rotor_ && rotor_->wind().outside_queries() > 0)
+    warnings.push_back(fmt::format("{} wind queries fell outside the turbulence grid (deflected tips or a displaced "
+                                   "rotor beyond its edge) and took the mean wind profile there",
+                                   rotor_->wind().outside_queries()));
+  return warnings;
+}
+
+void FloatingScene::finish(double t, FloatingState& s) const {
+  if (controller_) controller_->finish(t, *s.controller);
+}
+
+std::string FloatingScene::coupling_description() const {
+  std::vector<std::string> parts{"rigid multibody"};
+  if (!sea_description_.empty()) parts.push_back(sea_description_);
+  if (blades_) parts.push_back(blades_->description() + (rotor_ ? ", BEM on the deflected blades" : ", no aerodynamics"));
+  else if (rotor_) parts.push_back("rigid blades with BEM at every RK4 stage");
+  else parts.push_back("rigid blades, no aerodynamics");
+  parts.push_back(controller_ ? "controller at the large step" : "no controller (generator torque 0, pitch held)");
+  std::string text;
+  for (const std::string& p : parts) text += (text.empty() ? "" : "; ") + p;
+  return text;
+}
+
+RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress) {
+  const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), request.deck_path);
+  FloatingScene scene(deck);
+  FloatingState state = scene.make_state();
+  FixedStepScene run;
+  run.written = scene.written();
+  run.metadata.seeds = scene.seeds();
+  run.metadata.extra = {{"scene", "floating"}};
+  run.step = [&](double t, double dt) { scene.step(t, dt, state); };
+  run.row = [&](double t, std::span<double> row) { scene.row(t, state, row); };
+  if (scene.can_checkpoint()) {  // the scene state whole, through its field lists
+    run.save = [&](CheckpointWriter& w) { w.io(state); };
+    run.load = [&](CheckpointReader& r) { r.io(state); };
+  }
+  run.warnings = [&](std::vector<std::string>& warnings) {
+    for (const std::string& w : scene.warnings(state)) warnings.push_back(w);
   };
   RunReport report = [&] {
     try {
-      return run_fixed_steps(request, deck, std::move(scene), progress);
+      return run_fixed_steps(request, deck, std::move(run), progress);
     } catch (...) {
-      if (controller) controller->finish(0.0);
+      scene.finish(0.0, state);
       throw;
     }
   }();
-  if (controller) controller->finish(report.simulated_s);
-  if (blades) report.substeps = blades->substeps();
-  // What this scene coupled, from what the deck holds.
-  std::vector<std::string> parts{"rigid multibody"};
-  if (deck.has("hydro") || deck.has("mooring"))
-    parts.push_back(std::string(deck.has("hydro") ? "hydro" : "") + (deck.has("hydro") && deck.has("mooring") ? " + " : "") +
-                    (deck.has("mooring") ? "mooring" : "") + (deck.has("waves") ? " in waves" : " in still water") +
-                    " at every RK4 stage");
-  if (blades) parts.push_back(blades->description() + (rotor ? ", BEM on the deflected blades" : ", no aerodynamics"));
-  else if (rotor) parts.push_back("rigid blades with BEM at every RK4 stage");
-  else parts.push_back("rigid blades, no aerodynamics");
-  parts.push_back(controller ? "controller at the large step" : "no controller (generator torque 0, pitch held)");
-  report.coupling.clear();
-  for (const std::string& p : parts) report.coupling += (report.coupling.empty() ? "" : "; ") + p;
+  scene.finish(report.simulated_s, state);
+  report.substeps = scene.substeps();
+  report.coupling = scene.coupling_description();
   return report;
 }
 

@@ -3,16 +3,126 @@
 // under gravity, hydrodynamics, hydrostatics and mooring in a sea (evaluated at every Runge–Kutta
 // stage of the large step; the hydro added mass on the left-hand side), with rigid blades and BEM
 // at every stage, or with three flexible MBBT blades, their aerodynamics and the rotor spin at the
-// small step (turbine_blades.hpp); the controller at the large step. Rows restore the solvers'
-// warm starts they move, so output decimation changes nothing; the scene's whole state can be
-// checkpointed (run/checkpoint.hpp). The OC3-Hywind decks in inputs/oc3_hywind and the seed's
-// cases in inputs/seed_cases are its verification and load cases.
+// small step (turbine_blades.hpp); the controller at the large step. The OC3-Hywind decks in
+// inputs/oc3_hywind and the seed's cases in inputs/seed_cases are its verification and load cases.
+//
+// Model and state apart (as Drake's System and Context, MuJoCo's mjModel and mjData): a
+// FloatingScene is what the deck says, fixed for the run; everything that changes lives in one
+// plain, copyable FloatingState. A step advances a state; a row reads one and changes nothing, so
+// output decimation changes nothing; a copy continues bit-identically; a checkpoint writes it
+// through its field lists (core/fields.hpp).
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fowtsim/core/channels.hpp"
 #include "fowtsim/io/schema.hpp"
+#include "fowtsim/multibody/dynamics.hpp"
+#include "fowtsim/multibody/model.hpp"
+#include "fowtsim/multibody/state.hpp"
 #include "run/run_types.hpp"
+#include "scenes/rotor_aero.hpp"
+#include "scenes/sea_modules.hpp"
+#include "scenes/turbine_blades.hpp"
+#include "scenes/turbine_controller.hpp"
 
 namespace fowtsim::driver {
 
 io::Schema floating_scene_schema();
 RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress);
+
+// The controller's demands, held over the large step.
+struct HeldDemands {
+  double generator_torque_N_m = 0.0;  // HSS
+  double pitch_rad = 0.0;             // collective
+};
+
+// Everything of a floating scene that changes during a run.
+struct FloatingState {
+  multibody::State body;
+  HeldDemands held;
+  std::optional<TurbineController::Data> controller;  // with a `controller` section
+  SeaModules::Data sea;
+  std::optional<RotorAero::Data> aero;                // with an `aero` section
+  std::optional<TurbineBlades::Data> blades;          // with a `blades` section
+  double max_rotor_speed_rad_s = 0.0;                 // |Ω| so far (the overspeed warning)
+};
+
+template <class Archive>
+void fields(Archive& a, HeldDemands& h) {
+  a.io(h.generator_torque_N_m);
+  a.io(h.pitch_rad);
+}
+template <class Archive>
+void fields(Archive& a, FloatingState& s) {
+  a.io(s.body);
+  a.io(s.held);
+  a.io(s.controller);
+  a.io(s.sea);
+  a.io(s.aero);
+  a.io(s.blades);
+  a.io(s.max_rotor_speed_rad_s);
+}
+
+class FloatingScene {
+ public:
+  // Reads and checks the deck (InputError with file:line before anything runs).
+  explicit FloatingScene(const io::ValidatedDeck& deck);
+  FloatingScene(const FloatingScene&) = delete;  // the blades and the loads refer to members
+  FloatingScene& operator=(const FloatingScene&) = delete;
+  ~FloatingScene();
+
+  // The state at t = 0: initial conditions, and the flexible blades at their start solution.
+  FloatingState make_state();
+  // Advances `s` from t to t + dt (one large step: controller, multibody, blades, sea memory).
+  void step(double t, double dt, FloatingState& s);
+  // The written channels at t (in written() order) of `s`, which it leaves as it is.
+  void row(double t, const FloatingState& s, std::span<double> out);
+
+  const std::vector<ChannelInfo>& written() const { return written_; }
+  bool can_checkpoint() const { return !controller_ || controller_->can_checkpoint(); }
+  std::vector<std::uint64_t> seeds() const;
+  // Inputs far outside sense, and what the run showed (overspeed, wind outside the grid).
+  std::vector<std::string> warnings(const FloatingState& s) const;
+  // The last call a DISCON library gets, at the end of the run (or a failure at t = 0).
+  void finish(double t, FloatingState& s) const;
+  std::string coupling_description() const;
+  int substeps() const { return blades_ ? blades_->substeps() : 1; }  // small steps per large step
+
+ private:
+  class StageLoads;
+  ShaftMotion shaft_at(double t, const multibody::State& body);
+  RotorDemands demands(const FloatingState& s) const;
+
+  multibody::Params structure_;
+  multibody::Model model_;
+  std::optional<SeaModules> sea_;
+  std::optional<RotorAero> rotor_;
+  std::optional<TurbineController> controller_;
+  std::optional<TurbineBlades> blades_;
+  std::unique_ptr<StageLoads> stage_loads_;
+  double initial_pitch_rad_ = 0.0;
+  double overspeed_rad_s_ = 0.0;  // 30 % above the built-in law's rated rotor speed (0: unknown)
+  std::vector<std::string> input_warnings_;
+  std::string sea_description_;  // what coupling_description() says of hydro and mooring
+
+  // Channels: each module's block is computed only when a written channel is in it.
+  struct Block {
+    std::size_t first = 0, count = 0;  // in all_
+    bool written = false;
+  };
+  std::vector<ChannelInfo> all_, written_;
+  std::vector<std::size_t> picked_;                   // indices into all_, in written order
+  Block body_block_, sea_block_, rotor_block_, blades_block_, controller_block_;
+  std::vector<std::size_t> controller_source_;        // controller block channel k ← controller_channels()[source[k]]
+
+  // Workspace (written before it is read; nothing in it crosses a step).
+  multibody::Evaluation evaluation_;
+  std::vector<double> values_;                        // every channel of the row
+  SeaModules::Data row_sea_;                          // a row evaluates the sea and rigid rotor on copies
+  std::optional<RotorAero::Data> row_aero_;
+};
 
 }  // namespace fowtsim::driver

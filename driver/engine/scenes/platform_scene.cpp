@@ -121,6 +121,7 @@ RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& 
   scene.metadata.seeds = sea.seeds();
   scene.metadata.extra = {{"scene", "platform"}};
   std::vector<double> values(all.size());
+  SeaModules::Data sea_data = sea.initial_data();  // the scene's state: the motion is prescribed
   // The motion is prescribed: a step only evaluates the sea at its end, every step, so the
   // mooring solver's warm starts — and the results — do not depend on output decimation; a row
   // reads the evaluation of its time.
@@ -129,9 +130,9 @@ RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& 
     Vec6 q, q_dot;
     trajectory.at(t, q, q_dot);
     for (int k = 0; k < 6; ++k) values[k] = k < 3 ? q[k] : q[k] / kDegree;
-    if (end_of_step) sea.advance(t, platform_motion(q, q_dot));
-    sea.evaluate(t, platform_motion(q, q_dot));
-    sea.channel_values(t, std::span<double>(values).subspan(6));
+    if (end_of_step) sea.advance(t, platform_motion(q, q_dot), sea_data);
+    sea.evaluate(t, platform_motion(q, q_dot), sea_data);
+    sea.channel_values(t, sea_data, std::span<double>(values).subspan(6));
   };
   evaluate(0.0, false);
   scene.step = [&](double t, double dt) { evaluate(t + dt, true); };

@@ -16,28 +16,40 @@
 #include "fowtsim/multibody/model.hpp"
 #include "fowtsim/multibody/params.hpp"
 #include "fowtsim/wind/wind_field.hpp"
-#include "run/checkpoint.hpp"
 
 namespace fowtsim::driver {
 
 class RotorAero {
  public:
+  // What changes during a run (a part of the scene state): the last evaluation (the channels read
+  // it; its node results warm-start the next solve and hold held inductions), the unsteady states
+  // and the rotor resultant; and workspace every evaluation writes before reading.
+  struct Data {
+    aero::Aero::Input input;            // the last evaluation's input
+    aero::Aero::Output output;          // its output
+    aero::Aero::State unsteady;         // unsteady airfoil / dynamic inflow states (empty when off)
+    Vec3 force_N = Vec3::Zero();        // rotor force at the apex, g [N]
+    Vec3 moment_N_m = Vec3::Zero();     // rotor moment about the apex, g [N·m]
+    aero::Aero::Input local;            // workspace: the rigid rotor placed at the origin with h = identity
+    multibody::ChainKinematics chain;   // workspace: advance_states' end configuration
+    std::vector<Vec3> points, inflow;   // workspace: node positions and their wind
+  };
+
   // Reads the deck's `aero`, `airfoils` and `wind` sections; the rotor geometry (precone, hub
   // radius) comes from the structure.
   RotorAero(const io::ValidatedDeck& deck, const multibody::Params& structure);
+  Data make_data() const;
 
   // Loads at time t on the rotor in the chain configuration `chain`, blade pitch `pitch_rad`:
-  // force at the apex and moment about it, inertial frame [N, N·m].
-  void evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad,
-                aero::Induction induction = aero::Induction::solve);
+  // force at the apex and moment about it, inertial frame [N, N·m], into d.force_N, d.moment_N_m.
+  void evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad, Data& d,
+                aero::Induction induction = aero::Induction::solve) const;
   // Flexible blades: the caller places every node (position, airfoil frame, structural velocity,
-  // all in g; BladeAeroMap::place) in placed_input(), then evaluate_placed() computes the loads
-  // per node into output() and the rotor resultant about the apex.
-  aero::Aero::Input& placed_input() { return input_; }
+  // all in g; BladeAeroMap::place) in d.input, then evaluate_placed() computes the loads per node
+  // into d.output and the rotor resultant about the apex.
   void evaluate_placed(double t, const Vec3& apex_m, const Mat3& t_gh, double rotor_speed_rad_s,
                        std::span<const double> pitch_rad, const Vec3& tower_base_m, const Vec3& tower_axis,
-                       aero::Induction induction);
-  const aero::Aero::Output& output() const { return output_; }
+                       aero::Induction induction, Data& d) const;
 
   // Unsteady airfoil aerodynamics and dynamic inflow (aero.unsteady_airfoil, aero.dynamic_inflow):
   // their states are read by every evaluation and advanced only here. Nothing happens when the
@@ -48,44 +60,41 @@ class RotorAero {
   // end evaluation holds the induction of the last Runge–Kutta stage (also at t_end, on the
   // predicted state): its quasi-steady BEM solve is the filters' input, and no second solve is
   // needed. The first call starts the states there (the first step is quasi-steady).
-  void advance_states(const multibody::Model& model, const multibody::State& end, double t_end, double pitch_rad);
+  void advance_states(const multibody::Model& model, const multibody::State& end, double t_end, double pitch_rad,
+                      Data& d) const;
   // Flexible blades, at every small step: after evaluate_placed() at t, advances the states from
   // their time to t with that evaluation and evaluates again (held induction) so the output and
   // loads carry the new states; at a time not after the states' (the start's static passes) it
   // (re)starts them from that evaluation.
-  void advance_states_placed(double t);
+  void advance_states_placed(double t, Data& d) const;
   // The wind field (for the rotor-plane probe and checks that the rotor stays inside the grid).
   const wind::WindField& wind() const { return *wind_; }
   const aero::Params& params() const { return params_; }
-  const Vec3& force_N() const { return force_; }
-  const Vec3& moment_N_m() const { return moment_; }
   // Hub-height wind speed at the probe (for the controller's record 27 and the channels).
   Vec3 probe_wind(double t) const { return wind_->velocity(wind_->params().probe_point_m, t); }
 
-  // What an evaluation leaves for the next one: each node's BEM root, the warm start of its next
-  // solve (and, with held inductions, its induced velocities). An output row evaluates between
-  // steps and restores it, so results do not depend on decimation. No allocation once sized.
-  void save_memory(std::vector<aero::NodeResult>& memory) const { memory = output_.nodes; }
-  void restore_memory(const std::vector<aero::NodeResult>& memory) { output_.nodes = memory; }
-  // Writes or reads the last evaluation's input and output whole (the channels and the warm
-  // starts) and the unsteady states, for checkpoints.
-  template <class Archive>
-  void checkpoint(Archive& archive);
-
   std::vector<ChannelInfo> channels() const;  // aero channels, then Wind1VelX/Y/Z
-  void channel_values(double t, std::span<double> out) const;
+  void channel_values(double t, const Data& d, std::span<double> out) const;
 
  private:
   aero::Params params_;
   std::shared_ptr<const wind::WindField> wind_;
   aero::RigidRotor hub_frame_rotor_;  // the rotor placed at the origin with h = identity
-  aero::Aero::Input local_, input_;
-  aero::Aero::Output output_;
-  aero::Aero::State state_;
-  multibody::ChainKinematics chain_;  // advance_states' end configuration
-  std::vector<Vec3> points_, inflow_;
   std::size_t aero_channel_count_ = 0;
-  Vec3 force_ = Vec3::Zero(), moment_ = Vec3::Zero();
 };
+
+// Field list of the rotor's data (core/fields.hpp).
+template <class Archive>
+void fields(Archive& a, RotorAero::Data& d) {
+  a.io(d.input);
+  a.io(d.output);
+  a.io(d.unsteady);
+  a.io(d.force_N);
+  a.io(d.moment_N_m);
+  a.scratch(d.local);
+  a.scratch(d.chain);
+  a.scratch(d.points);
+  a.scratch(d.inflow);
+}
 
 }  // namespace fowtsim::driver

@@ -25,9 +25,9 @@ SeaModules::SeaModules(const io::ValidatedDeck& deck, const FrameMotion& initial
   }
   if (deck.has("mooring")) mooring_ = mooring_params(deck.section("mooring"));
   if (hydro_) {
-    hydro_in_ = hydro::make_input(*hydro_);
-    hydro_in_.platform = initial_pose;
-    hydro_state_ = hydro::Hydro::make_state(*hydro_, hydro_in_);
+    initial_.hydro_input = hydro::make_input(*hydro_);
+    initial_.hydro_input.platform = initial_pose;
+    initial_.hydro = hydro::Hydro::make_state(*hydro_, initial_.hydro_input);
     if (excitation_table) {
       try {
         excitation_ = std::make_unique<WaveExcitation>(*sea_.field, *excitation_table);
@@ -54,45 +54,46 @@ SeaModules::SeaModules(const io::ValidatedDeck& deck, const FrameMotion& initial
       }
     }
   }
-  if (mooring_) mooring_state_ = mooring::QuasiStaticMooring::make_state(*mooring_);
+  if (mooring_) initial_.mooring = mooring::QuasiStaticMooring::make_state(*mooring_);
   if (hydro_) hydro_channel_count_ = hydro::Hydro::channels(*hydro_).size();
   channel_count_ = channels().size();
 }
 
-void SeaModules::evaluate(double t, const FrameMotion& pose) {
+void SeaModules::evaluate(double t, const FrameMotion& pose, Data& d) const {
   if (hydro_) {
-    hydro_in_.platform = pose;
-    hydro_in_.time_s = t;
+    hydro::Hydro::Input& in = d.hydro_input;
+    in.platform = pose;
+    in.time_s = t;
     if (waterline_elevation_)
       for (std::size_t m = 0; m < waterline_elevation_->size(); ++m)
-        hydro_in_.surface_elevation_m[static_cast<Eigen::Index>(m)] = waterline_elevation_->elevation(m, t);
+        in.surface_elevation_m[static_cast<Eigen::Index>(m)] = waterline_elevation_->elevation(m, t);
     if (kinematics_) {
       for (std::size_t i = 0; i < kinematics_->size(); ++i) {
         const waves::WaveKinematics k = kinematics_->at(i, t);
         const auto c = static_cast<Eigen::Index>(i);
-        hydro_in_.fluid_velocity_m_s.col(c) = k.velocity_m_s;
-        hydro_in_.fluid_acceleration_m_s2.col(c) = k.acceleration_m_s2;
-        hydro_in_.dynamic_pressure_Pa[c] = k.dynamic_pressure_Pa;
+        in.fluid_velocity_m_s.col(c) = k.velocity_m_s;
+        in.fluid_acceleration_m_s2.col(c) = k.acceleration_m_s2;
+        in.dynamic_pressure_Pa[c] = k.dynamic_pressure_Pa;
       }
     }
-    if (excitation_) hydro_in_.wave_excitation = excitation_->at(t);
-    hydro_out_ = hydro::Hydro::outputs(*hydro_, hydro_in_, hydro_state_);
+    if (excitation_) in.wave_excitation = excitation_->at(t);
+    d.hydro_output = hydro::Hydro::outputs(*hydro_, in, d.hydro);
   }
-  if (mooring_) mooring_out_ = mooring::QuasiStaticMooring::evaluate(*mooring_, {pose, t}, mooring_state_);
+  if (mooring_) d.mooring_output = mooring::QuasiStaticMooring::evaluate(*mooring_, {pose, t}, d.mooring);
 }
 
-void SeaModules::advance(double t, const FrameMotion& pose) {
+void SeaModules::advance(double t, const FrameMotion& pose, Data& d) const {
   if (!hydro_ || !hydro_->potential_flow) return;
-  hydro_in_.platform = pose;
+  d.hydro_input.platform = pose;
   const double dt = hydro_->potential_flow->radiation.step_s;
-  hydro::Hydro::advance(*hydro_, hydro_in_, t - dt, dt, hydro_state_);
+  hydro::Hydro::advance(*hydro_, d.hydro_input, t - dt, dt, d.hydro);
 }
 
-Vec6 SeaModules::platform_load() const {
-  Vec6 load = hydro_ ? hydro_out_.total : Vec6::Zero();
+Vec6 SeaModules::platform_load(const Data& d) const {
+  Vec6 load = hydro_ ? d.hydro_output.total : Vec6::Zero();
   if (mooring_) {
-    load.head<3>() += mooring_out_.force_N;
-    load.tail<3>() += mooring_out_.moment_N_m;
+    load.head<3>() += d.mooring_output.force_N;
+    load.tail<3>() += d.mooring_output.moment_N_m;
   }
   return load;
 }
@@ -106,15 +107,15 @@ std::vector<ChannelInfo> SeaModules::channels() const {
   return all;
 }
 
-void SeaModules::channel_values(double t, std::span<double> out) const {
+void SeaModules::channel_values(double t, const Data& d, std::span<double> out) const {
   const waves::Waves::Output wo = waves::Waves::outputs(sea_, {}, waves::Waves::State{t});
   std::size_t k = 0;
   for (; k < wo.probe_count; ++k) out[k] = wo.elevation_m[k];
   if (hydro_) {
-    hydro::channel_values(*hydro_, hydro_out_, out.subspan(k, hydro_channel_count_));
+    hydro::channel_values(*hydro_, d.hydro_output, out.subspan(k, hydro_channel_count_));
     k += hydro_channel_count_;
   }
-  if (mooring_) mooring::QuasiStaticMooring::channel_values(*mooring_, mooring_out_, out.subspan(k, channel_count_ - k));
+  if (mooring_) mooring::QuasiStaticMooring::channel_values(*mooring_, d.mooring_output, out.subspan(k, channel_count_ - k));
 }
 
 Mat6 SeaModules::mooring_stiffness(const FrameMotion& pose) const {

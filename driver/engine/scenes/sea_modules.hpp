@@ -23,22 +23,35 @@ namespace fowtsim::driver {
 
 class SeaModules {
  public:
+  // What changes during a run (a part of the scene state): the radiation memory and the mooring
+  // solver's warm start; the last evaluation (hydro input and outputs, mooring outputs) is
+  // workspace that every evaluate() writes before anything reads it.
+  struct Data {
+    hydro::Hydro::State hydro;                         // radiation memory (empty without potential flow)
+    mooring::QuasiStaticMooring::State mooring{};      // each line's warm start
+    hydro::Hydro::Input hydro_input;                   // workspace: pose and sea kinematics of the last evaluation
+    hydro::Hydro::Output hydro_output;                 // workspace
+    mooring::QuasiStaticMooring::Output mooring_output{};  // workspace
+  };
+
   // Reads the deck's `waves`, `hydro` and `mooring` sections (each optional); `large_step_s` is the
   // platform's step (potential-flow radiation keeps its memory at it).
   SeaModules(const io::ValidatedDeck& deck, const FrameMotion& initial_pose, double large_step_s);
+  // The data at the start of a run (at the initial pose).
+  const Data& initial_data() const { return initial_; }
 
-  // Hydro and mooring at `pose` and time t ∈ [t_n, t_n + ΔT]; the results stay until the next call.
-  void evaluate(double t, const FrameMotion& pose);
+  // Hydro and mooring at `pose` and time t ∈ [t_n, t_n + ΔT]; the results stay in `d` until the next call.
+  void evaluate(double t, const FrameMotion& pose, Data& d) const;
   // Ends the step at t_n + ΔT = t with the platform at `pose`: the radiation memory moves on.
-  void advance(double t, const FrameMotion& pose);
-  // Total load on the platform about its reference point, inertial frame [N; N·m].
-  Vec6 platform_load() const;
+  void advance(double t, const FrameMotion& pose, Data& d) const;
+  // Total load on the platform about its reference point, inertial frame [N; N·m], of the last evaluation.
+  Vec6 platform_load(const Data& d) const;
   // Hydro added mass about the reference point, inertial frame (zero without hydro).
-  const Mat6& added_mass() const { return hydro_out_.added_mass; }
+  const Mat6& added_mass(const Data& d) const { return d.hydro_output.added_mass; }
 
   // Wave-probe, hydro and mooring channels, in the order channel_values() fills them.
   std::vector<ChannelInfo> channels() const;
-  void channel_values(double t, std::span<double> out) const;
+  void channel_values(double t, const Data& d, std::span<double> out) const;
   // Linearised 6×6 mooring stiffness at `pose` (analytic, about the reference point, inertial
   // axes; mooring/stiffness.hpp); zero without mooring.
   Mat6 mooring_stiffness(const FrameMotion& pose) const;
@@ -46,18 +59,6 @@ class SeaModules {
   std::vector<std::string> warnings() const;
   // Random seeds in use (the wave seed, when there is a sea).
   std::vector<std::uint64_t> seeds() const;
-
-  // What an evaluation leaves for the next one (the mooring solver's warm start): an output row
-  // evaluates the sea between steps and restores this, so results do not depend on decimation.
-  using Memory = mooring::QuasiStaticMooring::State;
-  const Memory& memory() const { return mooring_state_; }
-  void restore(const Memory& memory) { mooring_state_ = memory; }
-  // The whole changing state (warm start and radiation memory), for checkpoints.
-  template <class Archive>
-  void checkpoint(Archive& a) {
-    a.io(mooring_state_);
-    hydro_state_.radiation.checkpoint(a);
-  }
 
  private:
   waves::WaveParams wave_params_;
@@ -68,13 +69,19 @@ class SeaModules {
   std::unique_ptr<waves::PrecomputedKinematics> kinematics_;
   std::unique_ptr<waves::PrecomputedKinematics> waterline_elevation_;  // wave_elevation surface only
   std::unique_ptr<WaveExcitation> excitation_;  // potential flow with excitation only
-  hydro::Hydro::Input hydro_in_;
-  hydro::Hydro::State hydro_state_;
-  hydro::Hydro::Output hydro_out_;
-  mooring::QuasiStaticMooring::State mooring_state_{};
-  mooring::QuasiStaticMooring::Output mooring_out_{};
+  Data initial_;
   std::size_t hydro_channel_count_ = 0;
   std::size_t channel_count_ = 0;
 };
+
+// Field list of the sea's data (core/fields.hpp).
+template <class Archive>
+void fields(Archive& a, SeaModules::Data& d) {
+  a.io(d.hydro);
+  a.io(d.mooring);
+  a.scratch(d.hydro_input);
+  a.scratch(d.hydro_output);
+  a.scratch(d.mooring_output);
+}
 
 }  // namespace fowtsim::driver

@@ -109,7 +109,7 @@ FlexibleRotorParams rotor_params(const io::ValidatedDeck& deck, const multibody:
 
 }  // namespace
 
-TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Model& model, RotorAero* aero)
+TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Model& model, const RotorAero* aero)
     : model_(model),
       params_(rotor_params(deck, model)),
       map_(aero ? std::optional<BladeAeroMap>(std::in_place, aero->params(), params_.blade,
@@ -131,21 +131,22 @@ TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Mod
 }
 
 void TurbineBlades::start(const ShaftMotion& shaft, const multibody::State& state, double pitch_rad,
-                          const RotorDemands& demands) {
-  rotor_.start(shaft, state.rotor_azimuth_rad, state.rotor_speed_rad_s, pitch_rad, demands, start_);
-  held_ = rotor_.hub_load();
-  use_extrapolated_spin_profile(0.0);
+                          const RotorDemands& demands, Data& d, RotorAero::Data* aero) {
+  rotor_.start(shaft, state.rotor_azimuth_rad, state.rotor_speed_rad_s, pitch_rad, demands, start_, d.rotor, aero);
+  d.held = d.rotor.last;
+  use_extrapolated_spin_profile(0.0, d);
 }
 
-void TurbineBlades::add_stage_loads(const multibody::ChainKinematics& chain, multibody::AppliedLoads& out) const {
+void TurbineBlades::add_stage_loads(const multibody::ChainKinematics& chain, const Data& d,
+                                    multibody::AppliedLoads& out) const {
   const Mat3& t_gh = chain.rotor.orientation;
-  out.rotor_force_N += t_gh * held_.force_h_N;
-  out.rotor_moment_N_m += t_gh * held_.moment_h_N_m;
+  out.rotor_force_N += t_gh * d.held.force_h_N;
+  out.rotor_moment_N_m += t_gh * d.held.moment_h_N_m;
 }
 
-multibody::SpinMotion TurbineBlades::spin(double t) const {
-  const double tau = t - profile_.t0;
-  const multibody::SpinMotion& s = profile_.at_t0;
+multibody::SpinMotion TurbineBlades::spin(double t, const Data& d) const {
+  const double tau = t - d.profile.t0;
+  const multibody::SpinMotion& s = d.profile.at_t0;
   multibody::SpinMotion m = s;
   m.rotor_azimuth_rad = s.rotor_azimuth_rad + tau * s.rotor_speed_rad_s + 0.5 * tau * tau * s.rotor_acceleration_rad_s2;
   m.rotor_speed_rad_s = s.rotor_speed_rad_s + tau * s.rotor_acceleration_rad_s2;
@@ -155,11 +156,11 @@ multibody::SpinMotion TurbineBlades::spin(double t) const {
   return m;
 }
 
-void TurbineBlades::use_extrapolated_spin_profile(double t) {
-  const SpinState& s = rotor_.state().spin;
-  profile_.t0 = t;
-  profile_.at_t0 = {s.rotor_azimuth_rad, s.rotor_speed_rad_s, mean_rotor_acceleration_,
-                    s.generator_azimuth_rad, s.generator_speed_rad_s, mean_generator_acceleration_};
+void TurbineBlades::use_extrapolated_spin_profile(double t, Data& d) {
+  const SpinState& s = d.rotor.state.spin;
+  d.profile.t0 = t;
+  d.profile.at_t0 = {s.rotor_azimuth_rad, s.rotor_speed_rad_s, d.mean_rotor_acceleration_rad_s2,
+                     s.generator_azimuth_rad, s.generator_speed_rad_s, d.mean_generator_acceleration_rad_s2};
 }
 
 // The turbine as a pair for multi_rate_step: the multibody (slow) and the blades with the spin
@@ -171,33 +172,35 @@ class TurbineBlades::Coupling {
   using Load = FlexibleRotor::HubLoad;
   using SlowState = multibody::State;
   Coupling(TurbineBlades& blades, multibody::LoadProvider& provider, const ShaftAt& shaft_at, const RotorDemands& demands,
-           multibody::State& state)
-      : b_(blades), provider_(provider), shaft_at_(shaft_at), demands_(demands), state_(state) {}
+           multibody::State& state, Data& d, RotorAero::Data* aero)
+      : b_(blades), provider_(provider), shaft_at_(shaft_at), demands_(demands), state_(state), d_(d), aero_(aero) {}
 
   const multibody::State& slow_state() const { return state_; }
   void restore_slow_state(const multibody::State& saved) { state_ = saved; }
-  ShaftMotion motion_at_step_start() const { return b_.rotor_.shaft(); }
+  ShaftMotion motion_at_step_start() const { return d_.rotor.shaft; }
   // Predictor: the held root loads and the spin extrapolated from the blades'; corrector: the new
   // average and the spin the blades took over the step.
   void advance_slow(double t, double dt, SlowPass pass) {
     if (pass == SlowPass::predictor) {
-      b_.use_extrapolated_spin_profile(t);
-      b_.spin_before_ = b_.rotor_.state().spin;
+      use_extrapolated_spin_profile(t, d_);
+      d_.spin_before = d_.rotor.state.spin;
     } else {
-      b_.use_step_spin_profile(t);
+      use_step_spin_profile(t, d_);
     }
     multibody::Multibody::advance(b_.model_, provider_, t, dt, state_);
   }
   ShaftMotion slow_motion(double t) const { return shaft_at_(t, state_); }
-  void advance_fast(double t, double dt, const SubstepMotion<ShaftMotion>& slow) { b_.rotor_.advance(t, dt, slow, demands_); }
-  FlexibleRotor::HubLoad root_loads() const { return b_.rotor_.hub_load(); }
-  void hold(const FlexibleRotor::HubLoad& average, double dt_large) {
-    const SpinState& after = b_.rotor_.state().spin;
-    b_.mean_rotor_acceleration_ = (after.rotor_speed_rad_s - b_.spin_before_.rotor_speed_rad_s) / dt_large;
-    b_.mean_generator_acceleration_ = (after.generator_speed_rad_s - b_.spin_before_.generator_speed_rad_s) / dt_large;
-    b_.held_ = average;
+  void advance_fast(double t, double dt, const SubstepMotion<ShaftMotion>& slow) {
+    b_.rotor_.advance(t, dt, slow, demands_, d_.rotor, aero_);
   }
-  void finish_large_step() { b_.copy_spin(state_); }  // the blades own the spin
+  FlexibleRotor::HubLoad root_loads() const { return d_.rotor.last; }
+  void hold(const FlexibleRotor::HubLoad& average, double dt_large) {
+    const SpinState& after = d_.rotor.state.spin;
+    d_.mean_rotor_acceleration_rad_s2 = (after.rotor_speed_rad_s - d_.spin_before.rotor_speed_rad_s) / dt_large;
+    d_.mean_generator_acceleration_rad_s2 = (after.generator_speed_rad_s - d_.spin_before.generator_speed_rad_s) / dt_large;
+    d_.held = average;
+  }
+  void finish_large_step() { copy_spin(d_, state_); }  // the blades own the spin
 
  private:
   TurbineBlades& b_;
@@ -205,11 +208,13 @@ class TurbineBlades::Coupling {
   const ShaftAt& shaft_at_;
   const RotorDemands& demands_;
   multibody::State& state_;
+  Data& d_;
+  RotorAero::Data* aero_;
 };
 
 void TurbineBlades::advance(multibody::LoadProvider& provider, const ShaftAt& shaft_at, const RotorDemands& demands,
-                            double t, double dt_large, multibody::State& state) {
-  Coupling coupling(*this, provider, shaft_at, demands, state);
+                            double t, double dt_large, multibody::State& state, Data& d, RotorAero::Data* aero) {
+  Coupling coupling(*this, provider, shaft_at, demands, state, d, aero);
   CouplingSettings settings;
   settings.mode = mode_;
   settings.dt_coupling_s = dt_large;
@@ -217,36 +222,22 @@ void TurbineBlades::advance(multibody::LoadProvider& provider, const ShaftAt& sh
   multi_rate_step(coupling, settings, t);
 }
 
-void TurbineBlades::use_step_spin_profile(double t) {
+void TurbineBlades::use_step_spin_profile(double t, Data& d) {
   // The corrector pass of the multibody through the spin the fast side took over the step.
-  profile_.t0 = t;
-  profile_.at_t0 = {spin_before_.rotor_azimuth_rad, spin_before_.rotor_speed_rad_s, mean_rotor_acceleration_,
-                    spin_before_.generator_azimuth_rad, spin_before_.generator_speed_rad_s,
-                    mean_generator_acceleration_};
+  d.profile.t0 = t;
+  d.profile.at_t0 = {d.spin_before.rotor_azimuth_rad, d.spin_before.rotor_speed_rad_s, d.mean_rotor_acceleration_rad_s2,
+                     d.spin_before.generator_azimuth_rad, d.spin_before.generator_speed_rad_s,
+                     d.mean_generator_acceleration_rad_s2};
 }
 
-template <class Archive>
-void TurbineBlades::checkpoint(Archive& a) {
-  rotor_.checkpoint(a);
-  a.io(held_.force_h_N);
-  a.io(held_.moment_h_N_m);
-  a.io(spin_before_);
-  a.io(profile_.t0);
-  a.io(profile_.at_t0);
-  a.io(mean_rotor_acceleration_);
-  a.io(mean_generator_acceleration_);
-}
-template void TurbineBlades::checkpoint(CheckpointWriter&);
-template void TurbineBlades::checkpoint(CheckpointReader&);
-
-void TurbineBlades::copy_spin(multibody::State& state) const {
-  const SpinState& s = rotor_.state().spin;
+void TurbineBlades::copy_spin(const Data& d, multibody::State& state) {
+  const SpinState& s = d.rotor.state.spin;
   state.rotor_azimuth_rad = s.rotor_azimuth_rad;
   state.rotor_speed_rad_s = s.rotor_speed_rad_s;
-  state.rotor_acceleration_rad_s2 = mean_rotor_acceleration_;
+  state.rotor_acceleration_rad_s2 = d.mean_rotor_acceleration_rad_s2;
   state.generator_azimuth_rad = s.generator_azimuth_rad;
   state.generator_speed_rad_s = s.generator_speed_rad_s;
-  state.generator_acceleration_rad_s2 = mean_generator_acceleration_;
+  state.generator_acceleration_rad_s2 = d.mean_generator_acceleration_rad_s2;
 }
 
 std::string TurbineBlades::description() const {
@@ -317,11 +308,11 @@ std::vector<ChannelInfo> TurbineBlades::channels() const {
   return c;
 }
 
-void TurbineBlades::channel_values(std::span<double> out) const {
+void TurbineBlades::channel_values(const Data& d, std::span<double> out) const {
   std::size_t k = 0;
-  const FlexibleRotorState& st = rotor_.state();
+  const FlexibleRotorState& st = d.rotor.state;
   for (int b = 0; b < kBlades; ++b) {
-    const beam::BeamOutputs o = rotor_.blade_outputs(b);
+    const beam::BeamOutputs o = rotor_.blade_outputs(b, st);
     const Vec6& root = o.root_load;
     // f = c R_z(−β): c-components are R_z(−β) times f-components.
     const Mat3 t_cf = rotation_matrix(Vec3(0.0, 0.0, -st.pitch_rad[b]));
@@ -354,8 +345,8 @@ void TurbineBlades::channel_values(std::span<double> out) const {
       for (int i = 0; i < 6; ++i) out[k++] = load[i] / 1e3;
     }
   }
-  const FlexibleRotor::HubLoad hub = rotor_.hub_load();
-  const ShaftMotion& sh = rotor_.shaft();
+  const FlexibleRotor::HubLoad& hub = d.rotor.last;
+  const ShaftMotion& sh = d.rotor.shaft;
   const double hub_inertia_torque = rotor_.params().hub_inertia_kg_m2 *
                                     (st.spin.rotor_mean_acceleration_rad_s2 +
                                      sh.orientation.col(0).dot(sh.angular_acceleration_rad_s2));

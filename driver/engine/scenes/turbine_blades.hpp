@@ -40,46 +40,56 @@ class TurbineBlades {
   TurbineBlades(const TurbineBlades&) = delete;  // the aero map and the steppers refer to members
   TurbineBlades& operator=(const TurbineBlades&) = delete;
 
-  TurbineBlades(const io::ValidatedDeck& deck, const multibody::Model& model, RotorAero* aero);
+  TurbineBlades(const io::ValidatedDeck& deck, const multibody::Model& model, const RotorAero* aero);
+
+  // The spin the multibody takes over a large step: quadratic from (t0, at_t0).
+  struct SpinProfile {
+    double t0 = 0.0;
+    multibody::SpinMotion at_t0;
+  };
+  // What changes (a part of the scene state): the fast side, the root loads held over the large
+  // step and the spin handed to the multibody.
+  struct Data {
+    FlexibleRotor::Data rotor;
+    FlexibleRotor::HubLoad held;    // root loads averaged over the last large step, hub frame
+    SpinState spin_before;          // fast spin at the start of the last large step
+    SpinProfile profile;
+    double mean_rotor_acceleration_rad_s2 = 0.0;      // over the last large step
+    double mean_generator_acceleration_rad_s2 = 0.0;
+  };
+  Data make_data() const { return {rotor_.make_data(), {}, {}, {}, 0.0, 0.0}; }
 
   CouplingMode mode() const { return mode_; }
   int substeps() const { return substeps_; }
 
   // Blades at t = 0 (static or undeformed, as the deck says) on the multibody's initial state.
-  void start(const ShaftMotion& shaft, const multibody::State& state, double pitch_rad, const RotorDemands& demands);
+  void start(const ShaftMotion& shaft, const multibody::State& state, double pitch_rad, const RotorDemands& demands,
+             Data& d, RotorAero::Data* aero);
 
   // At a Runge–Kutta stage of the multibody: the held root loads turned with the stage hub.
-  void add_stage_loads(const multibody::ChainKinematics& chain, multibody::AppliedLoads& out) const;
+  void add_stage_loads(const multibody::ChainKinematics& chain, const Data& d, multibody::AppliedLoads& out) const;
   // The spin the multibody takes at time t (quadratic from the held profile).
-  multibody::SpinMotion spin(double t) const;
+  multibody::SpinMotion spin(double t, const Data& d) const;
 
-  // One large step, steps 1–4 of the header (multi_rate_step). `provider` must apply add_stage_loads() and answer
-  // rotor_spin() with spin(); `shaft_at(t, state)` gives the shaft motion of a multibody state
-  // under the provider's loads.
+  // One large step, steps 1–4 of the header (multi_rate_step). `provider` must apply
+  // add_stage_loads() and answer rotor_spin() with spin() of `d`; `shaft_at(t, state)` gives the
+  // shaft motion of a multibody state under the provider's loads.
   using ShaftAt = std::function<ShaftMotion(double t, const multibody::State& state)>;
   void advance(multibody::LoadProvider& provider, const ShaftAt& shaft_at, const RotorDemands& demands, double t,
-               double dt_large, multibody::State& state);
+               double dt_large, multibody::State& state, Data& d, RotorAero::Data* aero);
 
-  const ShaftMotion& shaft() const { return rotor_.shaft(); }
   const FlexibleRotor& rotor() const { return rotor_; }
-  // Writes or reads everything that changes, for checkpoints (run/checkpoint.hpp).
-  template <class Archive>
-  void checkpoint(Archive& archive);
 
   std::vector<ChannelInfo> channels() const;
-  void channel_values(std::span<double> out) const;
+  void channel_values(const Data& d, std::span<double> out) const;
   std::string description() const;
 
  private:
   class Coupling;  // this turbine as a MultiRateCoupling
-  void use_step_spin_profile(double t);          // the spin the blades took over the step from t
-  void use_extrapolated_spin_profile(double t);  // from the blades' spin at t, last step's mean acceleration
-  void copy_spin(multibody::State& state) const;
+  static void use_step_spin_profile(double t, Data& d);          // the spin the blades took over the step from t
+  static void use_extrapolated_spin_profile(double t, Data& d);  // from the blades' spin at t, last step's mean acceleration
+  static void copy_spin(const Data& d, multibody::State& state);
 
-  struct SpinProfile {
-    double t0 = 0.0;
-    multibody::SpinMotion at_t0;
-  };
   const multibody::Model& model_;
   FlexibleRotorParams params_;
   std::optional<BladeAeroMap> map_;  // refers to params_.blade
@@ -89,10 +99,22 @@ class TurbineBlades {
   FlexibleRotor::Start start_ = FlexibleRotor::Start::static_loads;
   std::vector<double> gauges_eta_;  // span gauges (arclength fractions)
   bool nodal_deflections_ = false;  // B<b>N<nnn>_TD{x,y,z}r channels
-  FlexibleRotor::HubLoad held_;
-  SpinState spin_before_;                         // fast spin at the start of the last step
-  SpinProfile profile_;
-  double mean_rotor_acceleration_ = 0.0, mean_generator_acceleration_ = 0.0;  // over the last large step
 };
+
+// Field lists (core/fields.hpp).
+template <class Archive>
+void fields(Archive& a, TurbineBlades::SpinProfile& p) {
+  a.io(p.t0);
+  a.io(p.at_t0);
+}
+template <class Archive>
+void fields(Archive& a, TurbineBlades::Data& d) {
+  a.io(d.rotor);
+  a.io(d.held);
+  a.io(d.spin_before);
+  a.io(d.profile);
+  a.io(d.mean_rotor_acceleration_rad_s2);
+  a.io(d.mean_generator_acceleration_rad_s2);
+}
 
 }  // namespace fowtsim::driver

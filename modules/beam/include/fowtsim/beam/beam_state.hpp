@@ -41,6 +41,19 @@ struct BeamState {
   StepMatrixCache step_matrix;      // generalized-α's factored step matrix, reused while fresh
 };
 
+// Its field list (core/fields.hpp): a checkpoint or a copy continues bit-identically only with
+// the factored step matrix.
+template <class Archive>
+void fields(Archive& a, BeamState& s) {
+  a.io(s.time_s);
+  a.io(s.position_m);
+  a.io(s.orientation);
+  a.io(s.velocity);
+  a.io(s.acceleration);
+  a.io(s.acceleration_valid);
+  a.io(s.step_matrix);
+}
+
 // Undeformed, at rest relative to f.
 BeamState make_state(const BeamModel& model);
 

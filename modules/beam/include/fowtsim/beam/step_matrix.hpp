@@ -20,4 +20,18 @@ struct StepMatrixCache {
   StepWeights weights;         // the m, c, k it was built with (they change with Δt)
 };
 
+// Field lists (core/fields.hpp).
+template <class Archive>
+void fields(Archive& a, BlockTridiagonal& m) {
+  for (std::vector<Mat6>* blocks : m.storage()) a.io(*blocks);
+}
+template <class Archive>
+void fields(Archive& a, StepMatrixCache& c) {
+  a.io(c.factored);
+  a.io(c.valid);
+  a.io(c.age);
+  a.io(c.turned_rad);
+  a.io(c.weights);
+}
+
 }  // namespace fowtsim::beam

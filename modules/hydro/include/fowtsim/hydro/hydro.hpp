@@ -81,6 +81,12 @@ struct Hydro {
   static std::vector<ChannelInfo> channels(const Params& params);
 };
 
+// Field list of the state (core/fields.hpp).
+template <class Archive>
+void fields(Archive& a, Hydro::State& s) {
+  a.io(s.radiation);
+}
+
 // An Input sized for params (node_count strip nodes, one elevation per member), at rest.
 Hydro::Input make_input(const Params& params);
 

@@ -68,7 +68,7 @@ struct RadiationModel {
   double fit_tolerance = 0.0;   // state_space: the tolerance asked for (a fit may miss it: see fit)
 };
 
-// The radiation memory at t_n: copyable, checkpointed by the driver.
+// The radiation memory at t_n: copyable, checkpointed through its field list.
 struct RadiationState {
   double time_s = 0.0;                        // t_n [s]
   Vec6 velocity = Vec6::Zero();               // q̇(t_n)
@@ -78,16 +78,18 @@ struct RadiationState {
   // convolution: the history part of the integral (all but the newest interval) at the stage
   // times t_n, t_n + ΔT/2, t_n + ΔT, summed once per step instead of at every stage.
   std::array<Vec6, 3> history_load{Vec6::Zero(), Vec6::Zero(), Vec6::Zero()};
-  template <class Archive>
-  void checkpoint(Archive& a) {
-    a.io(time_s);
-    a.io(velocity);
-    a.io(history);
-    a.io(newest);
-    a.io(modal);
-    a.io(history_load);
-  }
 };
+
+// Its field list (core/fields.hpp).
+template <class Archive>
+void fields(Archive& a, RadiationState& s) {
+  a.io(s.time_s);
+  a.io(s.velocity);
+  a.io(s.history);
+  a.io(s.newest);
+  a.io(s.modal);
+  a.io(s.history_load);
+}
 
 // Kernel, and for state_space its fit, from the table. Throws InputError for bad options or a
 // table that is not ascending.

@@ -24,4 +24,22 @@ struct State {
   double nacelle_yaw_acceleration_rad_s2 = 0.0;     // [rad/s²]
 };
 
+// Its field list (core/fields.hpp): checkpoints and comparison of states.
+template <class Archive>
+void fields(Archive& a, State& s) {
+  a.io(s.position_m);
+  a.io(s.orientation);
+  a.io(s.velocity_m_s);
+  a.io(s.angular_velocity_rad_s);
+  a.io(s.rotor_azimuth_rad);
+  a.io(s.rotor_speed_rad_s);
+  a.io(s.generator_azimuth_rad);
+  a.io(s.generator_speed_rad_s);
+  a.io(s.rotor_acceleration_rad_s2);
+  a.io(s.generator_acceleration_rad_s2);
+  a.io(s.nacelle_yaw_rad);
+  a.io(s.nacelle_yaw_rate_rad_s);
+  a.io(s.nacelle_yaw_acceleration_rad_s2);
+}
+
 }  // namespace fowtsim::multibody

@@ -1,0 +1,110 @@
+// The floating scene's state (scenes/floating_scene.hpp): one plain, copyable struct whose field
+// lists name every field, which a row reads without changing and from which a copy continues
+// bit-identically.
+#include <fstream>
+
+#include <catch2/catch.hpp>
+
+#include "fowtsim/core/fields.hpp"
+#include "fowtsim/io/deck.hpp"
+#include "fowtsim/testing/skip.hpp"
+#include "run/checkpoint.hpp"
+#include "scenes/floating_scene.hpp"
+
+using namespace fowtsim;
+using namespace fowtsim::driver;
+
+namespace {
+
+template <class T>
+void check_every_field_listed(const char* name) {
+  INFO(name << ": a field added to the struct must be added to its field list (io, or scratch for workspace)");
+  CHECK(listed_field_count<T>() == member_count<T>());
+}
+
+// A short deck: the shipped `deck` for `t_max_s`, every channel written.
+io::ValidatedDeck short_deck(const std::string& name, const std::string& deck, const std::string& overrides = "") {
+  const auto dir = testing::scratch_dir("scene_state_" + name);
+  std::ofstream(dir / "deck.yaml") << "include: [" << (testing::source_dir() / "inputs" / deck).string() << "]\n" << overrides;
+  return io::read_deck(floating_scene_schema(), dir / "deck.yaml");
+}
+
+// Steps a scene to t = steps·dt, then checks that a row leaves the state's bytes as they were and
+// that a copy of the state, stepped on, gives the same bytes and rows as the original.
+void check_row_and_copy(const io::ValidatedDeck& deck, int steps) {
+  FloatingScene scene(deck);
+  FloatingState s = scene.make_state();
+  const double dt = deck.number("simulation.dt_s");
+  for (int k = 0; k < steps; ++k) scene.step(k * dt, dt, s);
+  const double t = steps * dt;
+
+  const std::string before = state_bytes(s);
+  std::vector<double> row(scene.written().size());
+  scene.row(t, s, row);
+  CHECK(state_bytes(s) == before);
+
+  FloatingState copy = s;
+  for (int k = 0; k < 3; ++k) {
+    scene.step(t + k * dt, dt, s);
+    scene.step(t + k * dt, dt, copy);
+  }
+  CHECK(state_bytes(copy) == state_bytes(s));
+  std::vector<double> row_copy(row.size());
+  scene.row(t + 3 * dt, s, row);
+  scene.row(t + 3 * dt, copy, row_copy);
+  CHECK(row == row_copy);
+}
+
+}  // namespace
+
+TEST_CASE("every field of the scene state is in its field list", "[unit][scene_state]") {
+  check_every_field_listed<multibody::State>("multibody::State");
+  check_every_field_listed<hydro::RadiationState>("hydro::RadiationState");
+  check_every_field_listed<hydro::Hydro::State>("hydro::Hydro::State");
+  check_every_field_listed<aero::Aero::State>("aero::Aero::State");
+  check_every_field_listed<aero::Aero::Input>("aero::Aero::Input");
+  check_every_field_listed<aero::Aero::Output>("aero::Aero::Output");
+  check_every_field_listed<aero::RotorResult>("aero::RotorResult");
+  check_every_field_listed<beam::BeamState>("beam::BeamState");
+  check_every_field_listed<beam::StepMatrixCache>("beam::StepMatrixCache");
+  check_every_field_listed<SeaModules::Data>("SeaModules::Data");
+  check_every_field_listed<RotorAero::Data>("RotorAero::Data");
+  check_every_field_listed<FlexibleRotorState>("FlexibleRotorState");
+  check_every_field_listed<ShaftMotion>("ShaftMotion");
+  check_every_field_listed<FlexibleRotor::HubLoad>("FlexibleRotor::HubLoad");
+  check_every_field_listed<FlexibleRotor::Data>("FlexibleRotor::Data");
+  check_every_field_listed<TurbineBlades::SpinProfile>("TurbineBlades::SpinProfile");
+  check_every_field_listed<TurbineBlades::Data>("TurbineBlades::Data");
+  check_every_field_listed<TurbineController::Data>("TurbineController::Data");
+  check_every_field_listed<HeldDemands>("HeldDemands");
+  check_every_field_listed<FloatingState>("FloatingState");
+}
+
+TEST_CASE("member_count counts an aggregate's members, whatever their types", "[unit][scene_state]") {
+  struct Mixed {
+    Vec3 v = Vec3::Zero();
+    std::vector<double> list;
+    std::array<double, 3> fixed{};
+    std::optional<int> maybe;
+    double x = 0.0;
+  };
+  STATIC_REQUIRE(member_count<Mixed>() == 5);
+}
+
+TEST_CASE("flexible blades: a row leaves the scene state as it is, and a copy continues bit-identically",
+          "[unit][scene_state]") {
+  check_row_and_copy(short_deck("flexible", "oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml"), 10);
+}
+
+TEST_CASE("rigid blades with unsteady aerodynamics: a row leaves the scene state as it is, and a copy continues "
+          "bit-identically",
+          "[unit][scene_state]") {
+  check_row_and_copy(short_deck("rigid_ua", "oc3_hywind/turbine_ntm_12mps_irregular_unsteady_aero.yaml"), 10);
+}
+
+TEST_CASE("potential flow with its radiation memory: a row leaves the scene state as it is, and a copy continues "
+          "bit-identically",
+          "[unit][scene_state]") {
+  testing::shared_dir_or_skip();  // the WAMIT files are read from the shared reference data
+  check_row_and_copy(short_deck("wamit", "oc3_hywind/free_decay_pitch_wamit.yaml"), 10);
+}
