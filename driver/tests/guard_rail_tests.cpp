@@ -441,6 +441,16 @@ TEST_CASE("a misspelt output channel gets a did-you-mean", "[unit][run]") {
   CHECK_THAT(far_message, !Catch::Contains("did you mean") && Catch::Contains("available: ToySlowPos"));
 }
 
+TEST_CASE("a mooring solver setting outside the module's range stops at its deck line", "[unit][run]") {
+  // One range per key: the deck reader holds the mooring module's own bounds (60 … 10000).
+  const auto dir = testing::scratch_dir("guard_mooring_range");
+  std::ofstream(dir / "deck.yaml") << "include: [" << (testing::source_dir() / "inputs/oc3_hywind/free_decay_surge.yaml").string()
+                                   << "]\nmooring:\n  solver: {max_bisection_iterations: 30}\n";
+  const std::string message = message_of([&] { run_scene(run_request(dir / "deck.yaml", dir / "run", std::nullopt), nullptr); });
+  CHECK_THAT(message, Catch::Contains("deck.yaml:3") && Catch::Contains("max_bisection_iterations") && Catch::Contains("60"));
+  CHECK_FALSE(std::filesystem::exists(dir / "run.h5"));
+}
+
 TEST_CASE("tmax abc on the command line says a positive number is wanted", "[unit][run]") {
   CHECK(positive_number_problem("60", "a positive number of seconds").empty());
   CHECK(positive_number_problem("1e-3", "a positive number of seconds").empty());

@@ -28,9 +28,12 @@ Schema mooring_schema() {
       {"delta_yaw_stiffness_N_m_rad", Schema::number().at_least(0.0).default_value(0.0)
                                           .doc("yaw spring standing for a delta connection (not also in hydro)")},
       {"solver", Schema::map({
-                     {"tolerance", Schema::number().greater_than(0.0).default_value(1e-10).doc("relative closure tolerance")},
-                     {"max_newton_iterations", Schema::integer().at_least(1).default_value(50).doc("per attempt")},
-                     {"max_bisection_iterations", Schema::integer().at_least(1).default_value(200).doc("fallback")},
+                     // The ranges are the module's own (mooring::validate), so the deck reader stops at the line.
+                     {"tolerance", Schema::number().at_least(1e-15).at_most(1e-3).default_value(1e-10)
+                                       .doc("closure tolerance, a fraction of the line length")},
+                     {"max_newton_iterations", Schema::integer().at_least(1).at_most(1000).default_value(50).doc("per attempt")},
+                     {"max_bisection_iterations", Schema::integer().at_least(60).at_most(10000).default_value(200)
+                                                      .doc("per level of the nested-bisection fallback")},
                  }).optional().doc("catenary solver settings")},
       {"lines", Schema::sequence(line).min_items(1).doc("mooring lines")},
   });

@@ -8,6 +8,7 @@
 #include "decks/beam_deck.hpp"
 #include "decks/deck_helpers.hpp"
 #include "fowtsim/core/error.hpp"
+#include "scenes/scene_runner.hpp"
 
 namespace fowtsim::driver {
 namespace {
@@ -38,11 +39,7 @@ Schema beam_scene_schema() {
                          {"t_max_s", Schema::number().unit("s").greater_than(0.0).default_value(1.0).doc("simulated time (dynamic)")},
                          {"dt_s", Schema::number().unit("s").greater_than(0.0).default_value(0.005).doc("beam time step (dynamic)")},
                      }).doc("static or dynamic analysis")},
-      {"output", Schema::map({
-                     {"format", Schema::choice({"h5", "out", "both"}).default_value("h5").doc("HDF5, OpenFAST text .out, or both")},
-                     {"decimation", Schema::integer().at_least(1).default_value(1).doc("write every k-th step")},
-                     {"channels", Schema::sequence(Schema::string()).optional().doc("BeamDyn channel names; absent = all")},
-                 }).optional().doc("what to write")},
+      {"output", output_schema().optional().doc("what to write (BeamDyn channel names)")},
       {"beam", Schema::map(beam_schema_fields(48, 100000)).doc("the beam: reference line, sections, damping, discretisation")},
       {"root", Schema::map({
                    {"position_m", number_vector(3, "root position, global frame").optional()},

@@ -27,7 +27,7 @@ Schema simulation_schema(const char* step_doc) {
 Schema output_schema() {
   return Schema::map({
       {"format", Schema::choice({"h5", "out", "both"}).default_value("h5").doc("HDF5, OpenFAST text .out, or both")},
-      {"decimation", Schema::integer().at_least(1).default_value(1).doc("write every k-th step")},
+      {"decimation", Schema::integer().at_least(1).default_value(1).doc("write every k-th step (the large step where there are two)")},
       {"channels", Schema::sequence(Schema::string()).optional().doc("channel names; absent = all")},
   });
 }

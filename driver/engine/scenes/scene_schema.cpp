@@ -1,11 +1,13 @@
 #include "scenes/scene_schema.hpp"
 
+#include "scenes/scene_runner.hpp"
+
 namespace fowtsim::driver {
 namespace {
 
 using io::Schema;
 
-Schema simulation_schema() {
+Schema toy_simulation_schema() {
   return Schema::map({
       {"t_max_s", Schema::number().unit("s").greater_than(0.0).doc("simulated time")},
       {"dt_coupling_s", Schema::number().unit("s").greater_than(0.0).doc("large (coupling) step ΔT")},
@@ -14,14 +16,6 @@ Schema simulation_schema() {
       {"coupling", Schema::choice({"multi_rate", "predictor_corrector", "single_rate"})
                        .default_value("multi_rate").doc("how slow and fast subsystems exchange state")},
       {"seed", Schema::integer().at_least(0).default_value(0).doc("random seed (recorded in the output)")},
-  });
-}
-
-Schema output_schema() {
-  return Schema::map({
-      {"format", Schema::choice({"h5", "out", "both"}).default_value("h5").doc("HDF5, OpenFAST text .out, or both")},
-      {"decimation", Schema::integer().at_least(1).default_value(1).doc("write every k-th large step")},
-      {"channels", Schema::sequence(Schema::string()).optional().doc("channels to write; absent = all")},
   });
 }
 
@@ -40,7 +34,7 @@ Schema oscillator_schema(const char* what) {
 
 Schema scene_schema() {
   return Schema::map({
-      {"simulation", simulation_schema().doc("time stepping and coupling")},
+      {"simulation", toy_simulation_schema().doc("time stepping and coupling")},
       {"output", output_schema().optional().doc("what to write; absent = HDF5, all channels")},
       {"toy_oscillators", Schema::map({
                               {"slow", oscillator_schema("slow (heavy) oscillator")},
