@@ -63,6 +63,13 @@ TEST_CASE("a restart continues the turbine with unsteady airfoils and dynamic in
                 "flexible_unsteady_aero");
 }
 
+TEST_CASE("a restart continues the toy oscillators bit-identically (the scheduler's state whole)", "[unit][run]") {
+  // Slow and fast states, the held loads, the last frame motion and root loads, the step count.
+  check_restart(testing::source_dir() / "inputs/toy_coupled_oscillators.yaml", "", "toy");
+  check_restart(testing::source_dir() / "inputs/toy_coupled_oscillators.yaml", "simulation: {coupling: predictor_corrector}\n",
+                "toy_predictor_corrector");
+}
+
 TEST_CASE("a checkpoint of another deck or step is refused before the run", "[unit][run]") {
   const auto dir = testing::scratch_dir("restart_refused");
   const auto deck = testing::source_dir() / "inputs/oc3_hywind/free_decay_pitch.yaml";

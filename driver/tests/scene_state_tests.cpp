@@ -1,13 +1,16 @@
-// The floating scene's state (scenes/floating_scene.hpp): one plain, copyable struct whose field
-// lists name every field, which a row reads without changing and from which a copy continues
-// bit-identically.
+// Scene states (scenes/floating_scene.hpp, coupling/multi_rate_scheduler.hpp): each one plain,
+// copyable struct whose field lists name every field; the floating scene's is read by a row
+// without change, and a copy of it continues bit-identically.
 #include <fstream>
 
 #include <catch2/catch.hpp>
 
+#include "coupling/multi_rate_scheduler.hpp"
 #include "fowtsim/core/fields.hpp"
 #include "fowtsim/io/deck.hpp"
 #include "fowtsim/testing/skip.hpp"
+#include "fowtsim/toy/fast_oscillator.hpp"
+#include "fowtsim/toy/slow_oscillator.hpp"
 #include "run/checkpoint.hpp"
 #include "scenes/floating_scene.hpp"
 
@@ -57,7 +60,7 @@ void check_row_and_copy(const io::ValidatedDeck& deck, int steps) {
 
 }  // namespace
 
-TEST_CASE("every field of the scene state is in its field list", "[unit][scene_state]") {
+TEST_CASE("every field of the scene states is in its field list", "[unit][scene_state]") {
   check_every_field_listed<multibody::State>("multibody::State");
   check_every_field_listed<hydro::RadiationState>("hydro::RadiationState");
   check_every_field_listed<hydro::Hydro::State>("hydro::Hydro::State");
@@ -78,6 +81,14 @@ TEST_CASE("every field of the scene state is in its field list", "[unit][scene_s
   check_every_field_listed<TurbineController::Data>("TurbineController::Data");
   check_every_field_listed<HeldDemands>("HeldDemands");
   check_every_field_listed<FloatingState>("FloatingState");
+  // The toy oscillators' scene state: the scheduler's module pair.
+  check_every_field_listed<FrameMotion>("FrameMotion");
+  check_every_field_listed<RootLoads>("RootLoads");
+  check_every_field_listed<toy::SlowOscillator::State>("toy::SlowOscillator::State");
+  check_every_field_listed<toy::SlowOscillator::Input>("toy::SlowOscillator::Input");
+  check_every_field_listed<toy::FastOscillator::State>("toy::FastOscillator::State");
+  check_every_field_listed<toy::FastOscillator::Input>("toy::FastOscillator::Input");
+  check_every_field_listed<ModulePair<toy::SlowOscillator, toy::FastOscillator>::State>("ModulePair::State");
 }
 
 TEST_CASE("member_count counts an aggregate's members, whatever their types", "[unit][scene_state]") {

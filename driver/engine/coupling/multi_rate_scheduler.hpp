@@ -102,70 +102,84 @@ class ModulePair {
   using Motion = FrameMotion;
   using Load = RootLoads;
   using SlowState = typename Slow::State;
+  // Everything of the pair that changes: plain, copyable, with its field list (core/fields.hpp).
+  struct State {
+    typename Slow::State slow;
+    typename Fast::State fast;
+    typename Slow::Input slow_input{};  // the fast loads held over the large step
+    typename Fast::Input fast_input{};  // the frame motion of the last small step
+    RootLoads root_loads;               // fast root loads at the current time (first sample of a step)
+    long large_steps = 0;               // taken so far (MultiRateScheduler counts them)
+    template <class Archive>
+    friend void fields(Archive& a, State& s) {
+      a.io(s.slow);
+      a.io(s.fast);
+      a.io(s.slow_input);
+      a.io(s.fast_input);
+      a.io(s.root_loads);
+      a.io(s.large_steps);
+    }
+  };
 
   ModulePair(const typename Slow::Params& slow_params, const typename Fast::Params& fast_params)
-      : slow_params_(slow_params),
-        fast_params_(fast_params),
-        slow_(Slow::make_state(slow_params)),
-        fast_(Fast::make_state(fast_params)) {
+      : slow_params_(slow_params), fast_params_(fast_params) {
+    s_.slow = Slow::make_state(slow_params);
+    s_.fast = Fast::make_state(fast_params);
     // Initial loads: the fast subsystem's root loads at t = 0 on a frame at rest where the slow
     // subsystem starts (no history to average yet).
     const FrameMotion start = motion_at_step_start();
-    fast_input_.frame_begin = start;
-    fast_input_.frame_end = start;
-    root_loads_ = Fast::outputs(fast_params_, fast_input_, fast_).root_loads;
-    slow_input_.interface_loads = root_loads_;
+    s_.fast_input.frame_begin = start;
+    s_.fast_input.frame_end = start;
+    s_.root_loads = Fast::outputs(fast_params_, s_.fast_input, s_.fast).root_loads;
+    s_.slow_input.interface_loads = s_.root_loads;
   }
 
-  const SlowState& slow_state() const { return slow_; }
-  void restore_slow_state(const SlowState& saved) { slow_ = saved; }
+  const SlowState& slow_state() const { return s_.slow; }
+  void restore_slow_state(const SlowState& saved) { s_.slow = saved; }
   FrameMotion motion_at_step_start() const { return slow_output().attachment; }
-  void advance_slow(double t, double dt, SlowPass) { Slow::advance(slow_params_, slow_input_, t, dt, slow_); }
+  void advance_slow(double t, double dt, SlowPass) { Slow::advance(slow_params_, s_.slow_input, t, dt, s_.slow); }
   FrameMotion slow_motion(double) const { return slow_output().attachment; }
   void advance_fast(double t, double dt, const SubstepMotion<FrameMotion>& slow) {
-    fast_input_.frame_begin = slow.i == 0 ? slow.begin : fast_input_.frame_end;
-    fast_input_.frame_end = slow.at(1.0);
-    Fast::advance(fast_params_, fast_input_, t, dt, fast_);
-    root_loads_ = Fast::outputs(fast_params_, fast_input_, fast_).root_loads;
+    s_.fast_input.frame_begin = slow.i == 0 ? slow.begin : s_.fast_input.frame_end;
+    s_.fast_input.frame_end = slow.at(1.0);
+    Fast::advance(fast_params_, s_.fast_input, t, dt, s_.fast);
+    s_.root_loads = Fast::outputs(fast_params_, s_.fast_input, s_.fast).root_loads;
   }
-  const RootLoads& root_loads() const { return root_loads_; }
-  void hold(const RootLoads& average, double) { slow_input_.interface_loads = average; }
-  void finish_large_step() {}
+  const RootLoads& root_loads() const { return s_.root_loads; }
+  void hold(const RootLoads& average, double) { s_.slow_input.interface_loads = average; }
+  void finish_large_step() { ++s_.large_steps; }
 
-  const typename Fast::State& fast_state() const { return fast_; }
+  State& state() { return s_; }
+  const State& state() const { return s_; }
   // Outputs at the current time; the slow side reports the loads it will apply next.
-  typename Slow::Output slow_output() const { return Slow::outputs(slow_params_, slow_input_, slow_); }
-  typename Fast::Output fast_output() const { return Fast::outputs(fast_params_, fast_input_, fast_); }
+  typename Slow::Output slow_output() const { return Slow::outputs(slow_params_, s_.slow_input, s_.slow); }
+  typename Fast::Output fast_output() const { return Fast::outputs(fast_params_, s_.fast_input, s_.fast); }
 
  private:
   typename Slow::Params slow_params_;  // copied once: never refers to a caller's object
   typename Fast::Params fast_params_;
-  typename Slow::State slow_;
-  typename Fast::State fast_;
-  typename Slow::Input slow_input_{};
-  typename Fast::Input fast_input_{};
-  RootLoads root_loads_;  // fast root loads at the current time (first sample of a step)
+  State s_;
 };
 
-// A module pair, its coupling settings and the large-step count.
+// A module pair and its coupling settings.
 template <SlowSubsystem Slow, FastSubsystem Fast>
 class MultiRateScheduler {
  public:
+  using State = typename ModulePair<Slow, Fast>::State;
   MultiRateScheduler(const typename Slow::Params& slow_params, const typename Fast::Params& fast_params,
                      const CouplingSettings& settings)
       : settings_(validated(settings)), pair_(slow_params, fast_params) {}
 
   // Advances both subsystems by one large step ΔT.
-  void step() {
-    multi_rate_step(pair_, settings_, time_s());
-    ++large_step_;
-  }
+  void step() { multi_rate_step(pair_, settings_, time_s()); }
 
-  double time_s() const { return static_cast<double>(large_step_) * settings_.dt_coupling_s; }
-  long large_step() const { return large_step_; }
+  double time_s() const { return static_cast<double>(pair_.state().large_steps) * settings_.dt_coupling_s; }
+  long large_step() const { return pair_.state().large_steps; }
   const CouplingSettings& settings() const { return settings_; }
-  const typename Slow::State& slow_state() const { return pair_.slow_state(); }
-  const typename Fast::State& fast_state() const { return pair_.fast_state(); }
+  // The whole changing state (checkpoints).
+  State& state() { return pair_.state(); }
+  const typename Slow::State& slow_state() const { return pair_.state().slow; }
+  const typename Fast::State& fast_state() const { return pair_.state().fast; }
   typename Slow::Output slow_output() const { return pair_.slow_output(); }
   typename Fast::Output fast_output() const { return pair_.fast_output(); }
 
@@ -176,7 +190,6 @@ class MultiRateScheduler {
   }
   CouplingSettings settings_;
   ModulePair<Slow, Fast> pair_;
-  long large_step_ = 0;
 };
 
 }  // namespace fowtsim::driver

@@ -96,12 +96,12 @@ RunReport run_toy_scene(const io::ValidatedDeck& deck, const RunRequest& request
   scene.metadata.dt_coupling_s = settings.dt_coupling_s;
   scene.metadata.extra = {{"scene", "toy_oscillators"}, {"coupling", to_string(settings.mode)}};
 
-  // The scheduler keeps its held loads to itself (multi_rate_scheduler.hpp), so the scene cannot
-  // be checkpointed: `save` stays empty and --checkpoint-every/--restart are refused.
   Scheduler scheduler(slow, fast, settings);
   const toy::ExactSolution exact(slow, fast);
   const bool need_exact = std::any_of(picked.begin(), picked.end(), [](std::size_t i) { return i >= kFirstExactChannel; });
   scene.step = [&](double, double) { scheduler.step(); };
+  scene.save = [&](CheckpointWriter& w) { w.io(scheduler.state()); };  // the scene's whole state
+  scene.load = [&](CheckpointReader& r) { r.io(scheduler.state()); };
   scene.row = [&](double, std::span<double> row) {
     const auto values = values_of(scheduler, exact, need_exact);
     for (std::size_t k = 0; k < picked.size(); ++k) row[k] = values[picked[k]];

@@ -30,6 +30,23 @@ struct RootLoads {
   Vec3 point_m = Vec3::Zero();      // application point (root position), in g [m]
 };
 
+// Field lists (core/fields.hpp).
+template <class Archive>
+void fields(Archive& a, FrameMotion& m) {
+  a.io(m.position_m);
+  a.io(m.orientation);
+  a.io(m.velocity_m_s);
+  a.io(m.acceleration_m_s2);
+  a.io(m.angular_velocity_rad_s);
+  a.io(m.angular_acceleration_rad_s2);
+}
+template <class Archive>
+void fields(Archive& a, RootLoads& r) {
+  a.io(r.force_N);
+  a.io(r.moment_N_m);
+  a.io(r.point_m);
+}
+
 // Loads combine as vectors, field by field (LoadAverager).
 inline RootLoads& operator+=(RootLoads& a, const RootLoads& b) {
   a.force_N += b.force_N;

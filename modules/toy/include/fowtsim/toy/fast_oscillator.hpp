@@ -39,4 +39,16 @@ struct FastOscillator {
   static std::vector<ChannelInfo> channels(const Params& p);
 };
 
+// Field lists (core/fields.hpp).
+template <class Archive>
+void fields(Archive& a, FastOscillator::State& s) {
+  a.io(s.position_m);
+  a.io(s.velocity_m_s);
+}
+template <class Archive>
+void fields(Archive& a, FastOscillator::Input& u) {
+  a.io(u.frame_begin);
+  a.io(u.frame_end);
+}
+
 }  // namespace fowtsim::toy

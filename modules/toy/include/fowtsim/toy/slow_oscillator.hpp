@@ -39,4 +39,15 @@ struct SlowOscillator {
   static std::vector<ChannelInfo> channels(const Params& p);
 };
 
+// Field lists (core/fields.hpp).
+template <class Archive>
+void fields(Archive& a, SlowOscillator::State& s) {
+  a.io(s.position_m);
+  a.io(s.velocity_m_s);
+}
+template <class Archive>
+void fields(Archive& a, SlowOscillator::Input& u) {
+  a.io(u.interface_loads);
+}
+
 }  // namespace fowtsim::toy
