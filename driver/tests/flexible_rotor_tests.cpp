@@ -15,8 +15,8 @@
 #include "fowtsim/aero/aero.hpp"
 #include "fowtsim/testing/allocation_counter.hpp"
 #include "fowtsim/testing/skip.hpp"
-#include "scenes/blade_aero_map.hpp"
-#include "scenes/flexible_rotor.hpp"
+#include "rotor/blade_aero_map.hpp"
+#include "rotor/flexible_rotor.hpp"
 #include "scenes/turbine_blades.hpp"
 
 using namespace fowtsim;

@@ -23,7 +23,7 @@
 #include "run_request.hpp"
 #include "scenes/floating_scene.hpp"
 #include "scenes/sea_modules.hpp"
-#include "scenes/wave_excitation.hpp"
+#include "sea/wave_excitation.hpp"
 
 using namespace fowtsim;
 

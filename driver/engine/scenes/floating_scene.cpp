@@ -112,7 +112,7 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck) : structure_(structu
   const multibody::State initial = multibody::Multibody::make_state(model_);
   sea_.emplace(deck, platform_motion(initial), deck.number("simulation.dt_s"));
   if (deck.has("aero")) {
-    rotor_.emplace(deck, structure_);
+    rotor_.emplace(aero_params(deck), wind_params(deck.section("wind")), structure_);
     // One rotor, two descriptions: the aero blade table and the structure must agree on it.
     const aero::Params& ap = rotor_->params();
     if (ap.number_of_blades != structure_.rotor.blade_count)

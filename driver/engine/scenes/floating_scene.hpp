@@ -23,7 +23,7 @@
 #include "fowtsim/multibody/model.hpp"
 #include "fowtsim/multibody/state.hpp"
 #include "run/run_types.hpp"
-#include "scenes/rotor_aero.hpp"
+#include "rotor/rotor_aero.hpp"
 #include "scenes/sea_modules.hpp"
 #include "scenes/turbine_blades.hpp"
 #include "scenes/turbine_controller.hpp"

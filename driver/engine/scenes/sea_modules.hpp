@@ -17,7 +17,7 @@
 #include "fowtsim/io/schema.hpp"
 #include "fowtsim/mooring/quasi_static_mooring.hpp"
 #include "fowtsim/waves/waves_module.hpp"
-#include "scenes/wave_excitation.hpp"
+#include "sea/wave_excitation.hpp"
 
 namespace fowtsim::driver {
 

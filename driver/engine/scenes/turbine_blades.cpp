@@ -10,7 +10,7 @@
 #include "fowtsim/multibody/multibody.hpp"
 #include "decks/deck_helpers.hpp"
 #include "fowtsim/core/rotation_vector.hpp"
-#include "scenes/rotor_aero.hpp"
+#include "rotor/rotor_aero.hpp"
 
 namespace fowtsim::driver {
 

@@ -25,8 +25,8 @@
 #include "fowtsim/io/schema.hpp"
 #include "fowtsim/multibody/loads.hpp"
 #include "fowtsim/multibody/model.hpp"
-#include "scenes/blade_aero_map.hpp"
-#include "scenes/flexible_rotor.hpp"
+#include "rotor/blade_aero_map.hpp"
+#include "rotor/flexible_rotor.hpp"
 
 namespace fowtsim::driver {
 

@@ -1,9 +1,7 @@
-#include "scenes/rotor_aero.hpp"
+#include "rotor/rotor_aero.hpp"
 
 #include <numbers>
 
-#include "decks/aero_deck.hpp"
-#include "decks/wind_deck.hpp"
 #include "fowtsim/io/turbsim_bts.hpp"
 #include "fowtsim/wind/turbulence_generator.hpp"
 
@@ -29,8 +27,8 @@ std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p) {
 
 }  // namespace
 
-RotorAero::RotorAero(const io::ValidatedDeck& deck, const multibody::Params& structure)
-    : params_(aero_params(deck)), wind_(make_wind(wind_params(deck.section("wind")))) {
+RotorAero::RotorAero(aero::Params params, const wind::WindParams& wind, const multibody::Params& structure)
+    : params_(std::move(params)), wind_(make_wind(wind)) {
   // ElastoDyn signs in the structure (PreCone < 0 cones upwind), the aero convention + upwind.
   hub_frame_rotor_.precone_rad = -structure.rotor.precone_deg * kDegree;
   hub_frame_rotor_.hub_radius_m = structure.rotor.hub_radius_m;

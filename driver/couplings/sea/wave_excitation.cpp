@@ -1,4 +1,4 @@
-#include "scenes/wave_excitation.hpp"
+#include "sea/wave_excitation.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "scenes/flexible_rotor.hpp"
+#include "rotor/flexible_rotor.hpp"
 
 #include <cmath>
 
@@ -6,8 +6,8 @@
 
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/rotation_vector.hpp"
-#include "scenes/blade_aero_map.hpp"
-#include "scenes/rotor_aero.hpp"
+#include "rotor/blade_aero_map.hpp"
+#include "rotor/rotor_aero.hpp"
 
 namespace fowtsim::driver {
 namespace {

@@ -1,4 +1,4 @@
-#include "scenes/blade_aero_map.hpp"
+#include "rotor/blade_aero_map.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "fowtsim/aero/rigid_rotor.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/rotation_vector.hpp"
-#include "scenes/flexible_rotor.hpp"
+#include "rotor/flexible_rotor.hpp"
 
 namespace fowtsim::driver {
 

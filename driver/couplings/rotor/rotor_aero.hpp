@@ -11,7 +11,6 @@
 #include "fowtsim/aero/aero.hpp"
 #include "fowtsim/aero/rigid_rotor.hpp"
 #include "fowtsim/core/channels.hpp"
-#include "fowtsim/io/schema.hpp"
 #include "fowtsim/multibody/kinematics.hpp"
 #include "fowtsim/multibody/model.hpp"
 #include "fowtsim/multibody/params.hpp"
@@ -35,9 +34,9 @@ class RotorAero {
     std::vector<Vec3> points, inflow;   // workspace: node positions and their wind
   };
 
-  // Reads the deck's `aero`, `airfoils` and `wind` sections; the rotor geometry (precone, hub
-  // radius) comes from the structure.
-  RotorAero(const io::ValidatedDeck& deck, const multibody::Params& structure);
+  // The rotor of `params` in the wind of `wind` (a turbulent field is generated here, a TurbSim
+  // file read); the rotor geometry (precone, hub radius) comes from the structure.
+  RotorAero(aero::Params params, const wind::WindParams& wind, const multibody::Params& structure);
   Data make_data() const;
 
   // Loads at time t on the rotor in the chain configuration `chain`, blade pitch `pitch_rad`:

@@ -28,7 +28,7 @@
 #include "fowtsim/beam/solvers.hpp"
 #include "fowtsim/multibody/kinematics.hpp"
 #include "fowtsim/multibody/model.hpp"
-#include "scenes/rotor_aero.hpp"
+#include "rotor/rotor_aero.hpp"
 
 namespace fowtsim::driver {
 
