@@ -221,7 +221,7 @@ int main(int argc, char** argv) {
   bool sweep_list = false, sweep_slurm = false, sweep_collect = false;
   auto* sweep = app.add_subcommand("sweep", "design-load-case sweep: expand a sweep spec into cases, run them locally or "
                                             "as a Slurm job array (resumable), and collect the load table");
-  sweep->add_option("spec", sweep_request.spec, "sweep spec (YAML; driver/src/sweep/README.md)")->required()->check(CLI::ExistingFile);
+  sweep->add_option("spec", sweep_request.spec, "sweep spec (YAML; driver/app/sweep/README.md)")->required()->check(CLI::ExistingFile);
   auto* sweep_list_flag = sweep->add_flag("--list", sweep_list, "print the expanded cases and do nothing else");
   sweep->add_option("-j,--jobs", sweep_request.jobs, "local processes at once (default 1)")->check(positive("a positive whole number"));
   auto* sweep_slurm_flag = sweep->add_flag("--slurm", sweep_slurm, "write the case decks and a job-array script and submit it with sbatch");

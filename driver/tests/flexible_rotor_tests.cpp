@@ -1,4 +1,4 @@
-// The fast side of the coupled turbine alone (scenes/flexible_rotor.hpp): three NREL 5MW MBBT
+// The fast side of the coupled turbine alone (rotor/flexible_rotor.hpp): three NREL 5MW MBBT
 // blades and the rotor spin on a fixed shaft, no gravity, no air — the rotor-spin analogue of the
 // coupling tests. Nothing but the generator torque acts about the shaft, so the rotor's angular
 // momentum about it (hub, generator and the whirling, vibrating blades) changes exactly by the

@@ -1,5 +1,5 @@
 #pragma once
-// `fowtsim sweep SPEC`: design-load-case sweeps (driver/src/sweep/README.md).
+// `fowtsim sweep SPEC`: design-load-case sweeps (driver/app/sweep/README.md).
 //   --list                  print the expanded cases (names, wind speeds, seeds, sea states)
 //   --jobs N                run the cases still to run in N local processes, then write the load table
 //   --slurm [--dry-run]     write the case decks and a job-array script, and submit it with sbatch

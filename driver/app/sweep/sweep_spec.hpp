@@ -2,7 +2,7 @@
 // The sweep spec (`fowtsim sweep SPEC`): a base deck, load-case groups whose factors expand into
 // cases (case_expansion.hpp), and what the load table holds (load_table.hpp). The spec is a YAML
 // deck validated like every other (io/schema.hpp): problems are reported together, each with its
-// file:line:col. Format and an example: driver/src/sweep/README.md, inputs/sweeps/dlc12_oc3.yaml.
+// file:line:col. Format and an example: driver/app/sweep/README.md, inputs/sweeps/dlc12_oc3.yaml.
 #include <cstdint>
 #include <filesystem>
 #include <optional>

@@ -112,12 +112,7 @@ class ModulePair {
     long large_steps = 0;               // taken so far (MultiRateScheduler counts them)
     template <class Archive>
     friend void fields(Archive& a, State& s) {
-      a.io(s.slow);
-      a.io(s.fast);
-      a.io(s.slow_input);
-      a.io(s.fast_input);
-      a.io(s.root_loads);
-      a.io(s.large_steps);
+      a.io(s.slow, s.fast, s.slow_input, s.fast_input, s.root_loads, s.large_steps);
     }
   };
 

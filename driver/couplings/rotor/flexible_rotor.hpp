@@ -179,34 +179,20 @@ class FlexibleRotor {
 // Field lists (core/fields.hpp).
 template <class Archive>
 void fields(Archive& a, FlexibleRotorState& s) {
-  a.io(s.blades);
-  a.io(s.spin);
-  a.io(s.pitch_rad);
-  a.io(s.pitch_rate_rad_s);
-  a.io(s.pitch_acceleration_rad_s2);
-  a.io(s.time_s);
+  a.io(s.blades, s.spin, s.pitch_rad, s.pitch_rate_rad_s, s.pitch_acceleration_rad_s2, s.time_s);
 }
 template <class Archive>
 void fields(Archive& a, ShaftMotion& m) {
-  a.io(m.apex_position_m);
-  a.io(m.apex_velocity_m_s);
-  a.io(m.apex_acceleration_m_s2);
-  a.io(m.orientation);
-  a.io(m.angular_velocity_rad_s);
-  a.io(m.angular_acceleration_rad_s2);
-  a.io(m.tower_base_m);
-  a.io(m.tower_axis);
+  a.io(m.apex_position_m, m.apex_velocity_m_s, m.apex_acceleration_m_s2, m.orientation, m.angular_velocity_rad_s,
+       m.angular_acceleration_rad_s2, m.tower_base_m, m.tower_axis);
 }
 template <class Archive>
 void fields(Archive& a, FlexibleRotor::HubLoad& h) {
-  a.io(h.force_h_N);
-  a.io(h.moment_h_N_m);
+  a.io(h.force_h_N, h.moment_h_N_m);
 }
 template <class Archive>
 void fields(Archive& a, FlexibleRotor::Data& d) {
-  a.io(d.state);
-  a.io(d.shaft);
-  a.io(d.last);
+  a.io(d.state, d.shaft, d.last);
 }
 
 }  // namespace fowtsim::driver

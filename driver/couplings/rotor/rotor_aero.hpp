@@ -85,15 +85,8 @@ class RotorAero {
 // Field list of the rotor's data (core/fields.hpp).
 template <class Archive>
 void fields(Archive& a, RotorAero::Data& d) {
-  a.io(d.input);
-  a.io(d.output);
-  a.io(d.unsteady);
-  a.io(d.force_N);
-  a.io(d.moment_N_m);
-  a.scratch(d.local);
-  a.scratch(d.chain);
-  a.scratch(d.points);
-  a.scratch(d.inflow);
+  a.io(d.input, d.output, d.unsteady, d.force_N, d.moment_N_m);
+  a.scratch(d.local, d.chain, d.points, d.inflow);
 }
 
 }  // namespace fowtsim::driver

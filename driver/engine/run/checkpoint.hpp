@@ -66,12 +66,12 @@ class CheckpointWriter {
   void put(const T& v) {
     fields(*this, const_cast<T&>(v));  // a field list names fields for reading and writing alike
   }
-  template <class T>
-  void io(const T& v) {
-    put(v);
+  template <class... T>
+  void io(const T&... v) {
+    (put(v), ...);
   }
-  template <class T>
-  void scratch(const T&) {}  // workspace: overwritten before it is read
+  template <class... T>
+  void scratch(const T&...) {}  // workspace: overwritten before it is read
 
  private:
   std::ostream& os_;
@@ -130,12 +130,12 @@ class CheckpointReader {
   void get(T& v) {
     fields(*this, v);
   }
-  template <class T>
-  void io(T& v) {
-    get(v);
+  template <class... T>
+  void io(T&... v) {
+    (get(v), ...);
   }
-  template <class T>
-  void scratch(T&) {}
+  template <class... T>
+  void scratch(T&...) {}
   [[noreturn]] void mismatch(const std::string& what) const;
 
  private:

@@ -52,18 +52,11 @@ struct FloatingState {
 
 template <class Archive>
 void fields(Archive& a, HeldDemands& h) {
-  a.io(h.generator_torque_N_m);
-  a.io(h.pitch_rad);
+  a.io(h.generator_torque_N_m, h.pitch_rad);
 }
 template <class Archive>
 void fields(Archive& a, FloatingState& s) {
-  a.io(s.body);
-  a.io(s.held);
-  a.io(s.controller);
-  a.io(s.sea);
-  a.io(s.aero);
-  a.io(s.blades);
-  a.io(s.max_rotor_speed_rad_s);
+  a.io(s.body, s.held, s.controller, s.sea, s.aero, s.blades, s.max_rotor_speed_rad_s);
 }
 
 class FloatingScene {

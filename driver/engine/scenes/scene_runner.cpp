@@ -75,8 +75,9 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
   // Checkpoints (issue 16): <output>.chk every T, and a restart from one, both checked first.
   long checkpoint_steps = 0, k0 = 0;
   if ((request.checkpoint_every_s || request.restart_path) && !scene.save)
-    throw InputError({"scene", std::nullopt, "--checkpoint-every/--restart", "the floating-turbine scene"},
-                     "this scene does not write checkpoints (the floating turbine does)");
+    throw InputError({"scene", std::nullopt, "--checkpoint-every/--restart", "the floating-turbine or toy scene"},
+                     "this run does not write checkpoints (the floating turbine with the built-in controller and the toy "
+                     "oscillators do)");
   if (request.checkpoint_every_s) {
     checkpoint_steps = std::lround(*request.checkpoint_every_s / dt);
     if (checkpoint_steps < 1 || std::abs(checkpoint_steps * dt - *request.checkpoint_every_s) > 1e-9 * *request.checkpoint_every_s)

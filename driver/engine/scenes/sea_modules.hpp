@@ -77,11 +77,8 @@ class SeaModules {
 // Field list of the sea's data (core/fields.hpp).
 template <class Archive>
 void fields(Archive& a, SeaModules::Data& d) {
-  a.io(d.hydro);
-  a.io(d.mooring);
-  a.scratch(d.hydro_input);
-  a.scratch(d.hydro_output);
-  a.scratch(d.mooring_output);
+  a.io(d.hydro, d.mooring);
+  a.scratch(d.hydro_input, d.hydro_output, d.mooring_output);
 }
 
 }  // namespace fowtsim::driver

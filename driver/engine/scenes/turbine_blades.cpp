@@ -232,12 +232,9 @@ void TurbineBlades::use_step_spin_profile(double t, Data& d) {
 
 void TurbineBlades::copy_spin(const Data& d, multibody::State& state) {
   const SpinState& s = d.rotor.state.spin;
-  state.rotor_azimuth_rad = s.rotor_azimuth_rad;
-  state.rotor_speed_rad_s = s.rotor_speed_rad_s;
-  state.rotor_acceleration_rad_s2 = d.mean_rotor_acceleration_rad_s2;
-  state.generator_azimuth_rad = s.generator_azimuth_rad;
-  state.generator_speed_rad_s = s.generator_speed_rad_s;
-  state.generator_acceleration_rad_s2 = d.mean_generator_acceleration_rad_s2;
+  multibody::set_spin({s.rotor_azimuth_rad, s.rotor_speed_rad_s, d.mean_rotor_acceleration_rad_s2, s.generator_azimuth_rad,
+                       s.generator_speed_rad_s, d.mean_generator_acceleration_rad_s2},
+                      state);
 }
 
 std::string TurbineBlades::description() const {

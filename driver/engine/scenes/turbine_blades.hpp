@@ -104,17 +104,12 @@ class TurbineBlades {
 // Field lists (core/fields.hpp).
 template <class Archive>
 void fields(Archive& a, TurbineBlades::SpinProfile& p) {
-  a.io(p.t0);
-  a.io(p.at_t0);
+  a.io(p.t0, p.at_t0);
 }
 template <class Archive>
 void fields(Archive& a, TurbineBlades::Data& d) {
-  a.io(d.rotor);
-  a.io(d.held);
-  a.io(d.spin_before);
-  a.io(d.profile);
-  a.io(d.mean_rotor_acceleration_rad_s2);
-  a.io(d.mean_generator_acceleration_rad_s2);
+  a.io(d.rotor, d.held, d.spin_before, d.profile, d.mean_rotor_acceleration_rad_s2,
+       d.mean_generator_acceleration_rad_s2);
 }
 
 }  // namespace fowtsim::driver

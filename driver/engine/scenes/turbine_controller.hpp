@@ -33,8 +33,7 @@ class TurbineController {
 // Field list (core/fields.hpp).
 template <class Archive>
 void fields(Archive& a, TurbineController::Data& d) {
-  a.io(d.state);
-  a.io(d.output);
+  a.io(d.state, d.output);
 }
 
 }  // namespace fowtsim::driver

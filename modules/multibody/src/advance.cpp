@@ -50,13 +50,7 @@ void set_yaw(const Model& model, LoadProvider& provider, double t, State& s) {
 // A prescribed spin replaces the integrated one at every stage and at the end of the step.
 void set_spin(const Model& model, LoadProvider& provider, double t, State& s) {
   if (model.params.dofs.rotor != RotorSpin::prescribed) return;
-  const SpinMotion spin = provider.rotor_spin(t);
-  s.rotor_azimuth_rad = spin.rotor_azimuth_rad;
-  s.rotor_speed_rad_s = spin.rotor_speed_rad_s;
-  s.rotor_acceleration_rad_s2 = spin.rotor_acceleration_rad_s2;
-  s.generator_azimuth_rad = spin.generator_azimuth_rad;
-  s.generator_speed_rad_s = spin.generator_speed_rad_s;
-  s.generator_acceleration_rad_s2 = spin.generator_acceleration_rad_s2;
+  set_spin(provider.rotor_spin(t), s);
 }
 
 // ẏ at (t, y). `scratch` carries the non-integrated parts (yaw) and receives the stage state.

@@ -118,49 +118,22 @@ struct Aero {
 // (checkpointed whole: the node results warm-start the next solve and hold held inductions).
 template <class Archive>
 void fields(Archive& a, Aero::State& s) {
-  a.io(s.started);
-  a.io(s.time_s);
-  a.io(s.tau1_s);
-  a.io(s.nodes);
+  a.io(s.started, s.time_s, s.tau1_s, s.nodes);
 }
 template <class Archive>
 void fields(Archive& a, Aero::Input& u) {
-  a.io(u.hub_position_m);
-  a.io(u.hub_orientation);
-  a.io(u.rotor_speed_rad_s);
-  a.io(u.blade_pitch_rad);
-  a.io(u.node_position_m);
-  a.io(u.node_orientation);
-  a.io(u.node_velocity_m_s);
-  a.io(u.inflow_velocity_m_s);
-  a.io(u.node_pitch_rate_rad_s);
-  a.io(u.tower_base_position_m);
-  a.io(u.tower_axis);
-  a.io(u.time_s);
+  a.io(u.hub_position_m, u.hub_orientation, u.rotor_speed_rad_s, u.blade_pitch_rad, u.node_position_m,
+       u.node_orientation, u.node_velocity_m_s, u.inflow_velocity_m_s, u.node_pitch_rate_rad_s,
+       u.tower_base_position_m, u.tower_axis, u.time_s);
 }
 template <class Archive>
 void fields(Archive& a, RotorResult& r) {
-  a.io(r.force_hub_N);
-  a.io(r.moment_hub_N_m);
-  a.io(r.power_W);
-  a.io(r.mean_axial_inflow_m_s);
-  a.io(r.skew_rad);
-  a.io(r.radius_m);
-  a.io(r.area_m2);
-  a.io(r.tip_speed_ratio);
-  a.io(r.cp);
-  a.io(r.ct);
-  a.io(r.cq);
-  a.io(r.mean_quasi_steady_axial_induction);
+  a.io(r.force_hub_N, r.moment_hub_N_m, r.power_W, r.mean_axial_inflow_m_s, r.skew_rad, r.radius_m, r.area_m2,
+       r.tip_speed_ratio, r.cp, r.ct, r.cq, r.mean_quasi_steady_axial_induction);
 }
 template <class Archive>
 void fields(Archive& a, Aero::Output& y) {
-  a.io(y.force_N_m);
-  a.io(y.moment_N_m_m);
-  a.io(y.disturbed_inflow_m_s);
-  a.io(y.nodes);
-  a.io(y.rotor);
-  a.io(y.unconverged_nodes);
+  a.io(y.force_N_m, y.moment_N_m_m, y.disturbed_inflow_m_s, y.nodes, y.rotor, y.unconverged_nodes);
 }
 
 // Input and Output sized for params, at rest (identity orientations, zero velocities).

@@ -45,13 +45,7 @@ struct BeamState {
 // the factored step matrix.
 template <class Archive>
 void fields(Archive& a, BeamState& s) {
-  a.io(s.time_s);
-  a.io(s.position_m);
-  a.io(s.orientation);
-  a.io(s.velocity);
-  a.io(s.acceleration);
-  a.io(s.acceleration_valid);
-  a.io(s.step_matrix);
+  a.io(s.time_s, s.position_m, s.orientation, s.velocity, s.acceleration, s.acceleration_valid, s.step_matrix);
 }
 
 // Undeformed, at rest relative to f.

@@ -27,11 +27,7 @@ void fields(Archive& a, BlockTridiagonal& m) {
 }
 template <class Archive>
 void fields(Archive& a, StepMatrixCache& c) {
-  a.io(c.factored);
-  a.io(c.valid);
-  a.io(c.age);
-  a.io(c.turned_rad);
-  a.io(c.weights);
+  a.io(c.factored, c.valid, c.age, c.turned_rad, c.weights);
 }
 
 }  // namespace fowtsim::beam

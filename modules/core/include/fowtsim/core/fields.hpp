@@ -1,7 +1,7 @@
 #pragma once
 // Field lists of plain state structs: each struct that changes during a run names its fields once,
 //
-//   template <class Archive> void fields(Archive& a, T& s) { a.io(s.x); a.io(s.y); a.scratch(s.w); }
+//   template <class Archive> void fields(Archive& a, T& s) { a.io(s.x, s.y); a.scratch(s.w); }
 //
 // (found by argument-dependent lookup, beside the struct), and that one list serves checkpoints,
 // comparison (two states are the same when their fields write the same bytes) and a count:
@@ -33,13 +33,13 @@ consteval std::size_t member_count() {
 // An archive that counts the fields a list names, one level deep.
 struct FieldCounter {
   std::size_t count = 0;
-  template <class T>
-  void io(T&) {
-    ++count;
+  template <class... T>
+  void io(T&...) {
+    count += sizeof...(T);
   }
-  template <class T>
-  void scratch(T&) {
-    ++count;
+  template <class... T>
+  void scratch(T&...) {
+    count += sizeof...(T);
   }
 };
 

@@ -33,18 +33,12 @@ struct RootLoads {
 // Field lists (core/fields.hpp).
 template <class Archive>
 void fields(Archive& a, FrameMotion& m) {
-  a.io(m.position_m);
-  a.io(m.orientation);
-  a.io(m.velocity_m_s);
-  a.io(m.acceleration_m_s2);
-  a.io(m.angular_velocity_rad_s);
-  a.io(m.angular_acceleration_rad_s2);
+  a.io(m.position_m, m.orientation, m.velocity_m_s, m.acceleration_m_s2, m.angular_velocity_rad_s,
+       m.angular_acceleration_rad_s2);
 }
 template <class Archive>
 void fields(Archive& a, RootLoads& r) {
-  a.io(r.force_N);
-  a.io(r.moment_N_m);
-  a.io(r.point_m);
+  a.io(r.force_N, r.moment_N_m, r.point_m);
 }
 
 // Loads combine as vectors, field by field (LoadAverager).

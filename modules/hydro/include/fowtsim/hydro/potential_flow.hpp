@@ -83,12 +83,7 @@ struct RadiationState {
 // Its field list (core/fields.hpp).
 template <class Archive>
 void fields(Archive& a, RadiationState& s) {
-  a.io(s.time_s);
-  a.io(s.velocity);
-  a.io(s.history);
-  a.io(s.newest);
-  a.io(s.modal);
-  a.io(s.history_load);
+  a.io(s.time_s, s.velocity, s.history, s.newest, s.modal, s.history_load);
 }
 
 // Kernel, and for state_space its fit, from the table. Throws InputError for bad options or a

@@ -46,6 +46,16 @@ struct SpinMotion {
   double generator_azimuth_rad = 0.0, generator_speed_rad_s = 0.0, generator_acceleration_rad_s2 = 0.0;
 };
 
+// The state takes the spin as it is.
+inline void set_spin(const SpinMotion& spin, State& s) {
+  s.rotor_azimuth_rad = spin.rotor_azimuth_rad;
+  s.rotor_speed_rad_s = spin.rotor_speed_rad_s;
+  s.rotor_acceleration_rad_s2 = spin.rotor_acceleration_rad_s2;
+  s.generator_azimuth_rad = spin.generator_azimuth_rad;
+  s.generator_speed_rad_s = spin.generator_speed_rad_s;
+  s.generator_acceleration_rad_s2 = spin.generator_acceleration_rad_s2;
+}
+
 // Implemented by the driver (and by tests). Called from advance() at every stage; must not
 // allocate if the step is to stay allocation-free. A function may throw to abort the step.
 class LoadProvider {

@@ -27,19 +27,10 @@ struct State {
 // Its field list (core/fields.hpp): checkpoints and comparison of states.
 template <class Archive>
 void fields(Archive& a, State& s) {
-  a.io(s.position_m);
-  a.io(s.orientation);
-  a.io(s.velocity_m_s);
-  a.io(s.angular_velocity_rad_s);
-  a.io(s.rotor_azimuth_rad);
-  a.io(s.rotor_speed_rad_s);
-  a.io(s.generator_azimuth_rad);
-  a.io(s.generator_speed_rad_s);
-  a.io(s.rotor_acceleration_rad_s2);
-  a.io(s.generator_acceleration_rad_s2);
-  a.io(s.nacelle_yaw_rad);
-  a.io(s.nacelle_yaw_rate_rad_s);
-  a.io(s.nacelle_yaw_acceleration_rad_s2);
+  a.io(s.position_m, s.orientation, s.velocity_m_s, s.angular_velocity_rad_s, s.rotor_azimuth_rad,
+       s.rotor_speed_rad_s, s.generator_azimuth_rad, s.generator_speed_rad_s, s.rotor_acceleration_rad_s2,
+       s.generator_acceleration_rad_s2, s.nacelle_yaw_rad, s.nacelle_yaw_rate_rad_s,
+       s.nacelle_yaw_acceleration_rad_s2);
 }
 
 }  // namespace fowtsim::multibody

@@ -42,13 +42,11 @@ struct FastOscillator {
 // Field lists (core/fields.hpp).
 template <class Archive>
 void fields(Archive& a, FastOscillator::State& s) {
-  a.io(s.position_m);
-  a.io(s.velocity_m_s);
+  a.io(s.position_m, s.velocity_m_s);
 }
 template <class Archive>
 void fields(Archive& a, FastOscillator::Input& u) {
-  a.io(u.frame_begin);
-  a.io(u.frame_end);
+  a.io(u.frame_begin, u.frame_end);
 }
 
 }  // namespace fowtsim::toy

@@ -42,8 +42,7 @@ struct SlowOscillator {
 // Field lists (core/fields.hpp).
 template <class Archive>
 void fields(Archive& a, SlowOscillator::State& s) {
-  a.io(s.position_m);
-  a.io(s.velocity_m_s);
+  a.io(s.position_m, s.velocity_m_s);
 }
 template <class Archive>
 void fields(Archive& a, SlowOscillator::Input& u) {
