@@ -1,0 +1,109 @@
+#pragma once
+// One declaration per deck key: its name, its schema (type, unit, range, default, help text) and
+// the Params field it fills, in one place, so that validation, `--help-deck` (both from schema())
+// and the reader (read()) cannot disagree on a key:
+//
+//   DeckSection<mooring::MooringParams>()
+//       .key("depth_m", Schema::number().greater_than(0.0).doc("water depth"), &MooringParams::depth_m)
+//       .section("solver", solver_section(), &MooringParams::solver, true, "catenary solver settings")
+//       .list("lines", line_section(), &MooringParams::lines, 1, "mooring lines")
+//
+// A key without a default that the deck leaves out (an optional key) leaves its field as it is.
+// Binding a schema to a field of another type is a programming error (std::logic_error).
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "decks/deck_helpers.hpp"
+#include "fowtsim/io/schema.hpp"
+
+namespace fowtsim::driver {
+
+template <class P>
+class DeckSection {
+ public:
+  // A scalar key filling p.*field: double (number), int (integer), bool (boolean), std::string
+  // (string or choice), Vec3 (three numbers).
+  template <class T>
+  DeckSection& key(std::string name, io::Schema schema, T P::*field) {
+    check_type<T>(name, schema);
+    add(std::move(name), std::move(schema), [field](const io::ValidatedDeck& d, const std::string& k, P& p) {
+      p.*field = value<T>(d, k);
+    });
+    return *this;
+  }
+  // A key whose text names a value of another type (an enum): convert(text) gives it.
+  template <class T, class Convert>
+  DeckSection& key(std::string name, io::Schema schema, T P::*field, Convert convert) {
+    add(std::move(name), std::move(schema), [field, convert](const io::ValidatedDeck& d, const std::string& k, P& p) {
+      p.*field = convert(d.string(k));
+    });
+    return *this;
+  }
+  // A nested mapping read into p.*field (optional: absent leaves the field's defaults).
+  template <class Q>
+  DeckSection& section(std::string name, const DeckSection<Q>& sub, Q P::*field, bool optional, std::string doc) {
+    const io::Schema schema = sub.schema().doc(std::move(doc));
+    add(std::move(name), optional ? schema.optional() : schema,
+        [sub, field](const io::ValidatedDeck& d, const std::string& k, P& p) { sub.read_into(d.section(k), p.*field); });
+    return *this;
+  }
+  // A sequence of mappings, each read into one element of p.*field.
+  template <class Q>
+  DeckSection& list(std::string name, const DeckSection<Q>& item, std::vector<Q> P::*field, std::size_t min_items,
+                    std::string doc) {
+    add(std::move(name), io::Schema::sequence(item.schema()).min_items(min_items).doc(std::move(doc)),
+        [item, field](const io::ValidatedDeck& d, const std::string& k, P& p) {
+          (p.*field).clear();
+          for (std::size_t i = 0; i < d.size(k); ++i) {
+            Q q{};
+            item.read_into(d.section(fmt::format("{}[{}]", k, i)), q);
+            (p.*field).push_back(q);
+          }
+        });
+    return *this;
+  }
+
+  io::Schema schema() const { return io::Schema::map(fields_); }
+  // Every declared key the deck holds (or defaults) into p.
+  void read_into(const io::ValidatedDeck& d, P& p) const {
+    for (std::size_t i = 0; i < fields_.size(); ++i)
+      if (d.has(fields_[i].key)) readers_[i](d, fields_[i].key, p);
+  }
+
+ private:
+  using Reader = std::function<void(const io::ValidatedDeck&, const std::string&, P&)>;
+  void add(std::string name, io::Schema schema, Reader reader) {
+    fields_.push_back({std::move(name), std::move(schema)});
+    readers_.push_back(std::move(reader));
+  }
+  template <class T>
+  static T value(const io::ValidatedDeck& d, const std::string& k) {
+    if constexpr (std::is_same_v<T, double>) return d.number(k);
+    else if constexpr (std::is_same_v<T, int>) return static_cast<int>(d.integer(k));
+    else if constexpr (std::is_same_v<T, bool>) return d.boolean(k);
+    else if constexpr (std::is_same_v<T, std::string>) return d.string(k);
+    else return vec3(d, k);
+  }
+  template <class T>
+  static void check_type(const std::string& name, const io::Schema& schema) {
+    using io::SchemaType;
+    const SchemaType t = schema.spec().type;
+    const bool ok = std::is_same_v<T, double>        ? t == SchemaType::number
+                    : std::is_same_v<T, int>         ? t == SchemaType::integer
+                    : std::is_same_v<T, bool>        ? t == SchemaType::boolean
+                    : std::is_same_v<T, std::string> ? (t == SchemaType::string || t == SchemaType::choice)
+                    : std::is_same_v<T, Vec3>        ? t == SchemaType::sequence
+                                                     : false;
+    if (!ok) throw std::logic_error("deck key " + name + ": its schema's type does not fit the field it fills");
+  }
+
+  std::vector<io::SchemaField> fields_;
+  std::vector<Reader> readers_;
+};
+
+}  // namespace fowtsim::driver

@@ -1,0 +1,87 @@
+// One declaration per deck key (decks/deck_section.hpp): the schema and the reader come from the
+// same list, so every key the schema accepts lands in its field.
+#include <fstream>
+
+#include <catch2/catch.hpp>
+
+#include "decks/deck_section.hpp"
+#include "decks/mooring_deck.hpp"
+#include "fowtsim/io/deck.hpp"
+#include "fowtsim/testing/skip.hpp"
+
+using namespace fowtsim;
+using namespace fowtsim::driver;
+using io::Schema;
+
+namespace {
+
+struct Inner {
+  int count = 7;
+};
+struct Outer {
+  double length_m = -1.0;
+  bool on = false;
+  std::string name = "unset";
+  Vec3 point_m = Vec3::Zero();
+  Inner inner;
+  std::vector<Inner> items;
+};
+
+DeckSection<Outer> outer_section() {
+  DeckSection<Inner> inner;
+  inner.key("count", Schema::integer().at_least(0).default_value(3).doc("a count"), &Inner::count);
+  DeckSection<Outer> outer;
+  outer.key("length_m", Schema::number().greater_than(0.0).doc("a length"), &Outer::length_m)
+      .key("on", Schema::boolean().default_value(true).doc("a switch"), &Outer::on)
+      .key("name", Schema::string().optional().doc("a name"), &Outer::name)
+      .key("point_m", number_vector(3, "a point"), &Outer::point_m)
+      .section("inner", inner, &Outer::inner, true, "an optional mapping")
+      .list("items", inner, &Outer::items, 0, "a list");
+  return outer;
+}
+
+Outer read(const std::string& yaml) {
+  const auto dir = testing::scratch_dir("deck_section");
+  std::ofstream(dir / "deck.yaml") << yaml;
+  const DeckSection<Outer> section = outer_section();
+  const io::ValidatedDeck deck = io::read_deck(Schema::map({{"outer", section.schema()}}), dir / "deck.yaml");
+  Outer o;
+  section.read_into(deck.section("outer"), o);
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("a deck section reads every declared key into its field, defaults included", "[unit][decks]") {
+  const Outer o = read("outer: {length_m: 2.5, point_m: [1, 2, 3], items: [{count: 4}, {}]}\n");
+  CHECK(o.length_m == 2.5);
+  CHECK(o.on);                 // default
+  CHECK(o.name == "unset");    // optional key left out: the field keeps its value
+  CHECK(o.point_m == Vec3(1, 2, 3));
+  CHECK(o.inner.count == 7);   // optional mapping left out: the struct's own default
+  REQUIRE(o.items.size() == 2);
+  CHECK(o.items[0].count == 4);
+  CHECK(o.items[1].count == 3);  // the schema's default
+  const Outer given = read("outer: {length_m: 1, on: false, name: x, point_m: [0, 0, 0], inner: {count: 9}, items: []}\n");
+  CHECK_FALSE(given.on);
+  CHECK(given.name == "x");
+  CHECK(given.inner.count == 9);
+}
+
+TEST_CASE("a deck key bound to a field of another type is refused when the section is built", "[unit][decks]") {
+  DeckSection<Outer> s;
+  CHECK_THROWS_AS(s.key("length_m", Schema::integer(), &Outer::length_m), std::logic_error);
+  CHECK_THROWS_AS(s.key("on", Schema::number(), &Outer::on), std::logic_error);
+}
+
+TEST_CASE("the mooring section's schema and reader agree with the OC3 deck", "[unit][decks]") {
+  const io::ValidatedDeck deck =
+      io::read_deck(Schema::map({{"mooring", mooring_schema()}}), testing::source_dir() / "inputs/oc3_hywind/mooring.yaml");
+  const mooring::MooringParams p = mooring_params(deck.section("mooring"));
+  // OC3-Hywind (Jonkman 2010, Table 5-1): 320 m depth, three lines of 902.2 m, EA 384.243 MN.
+  CHECK(p.depth_m == 320.0);
+  REQUIRE(p.lines.size() == 3);
+  CHECK(p.lines[0].unstretched_length_m == 902.2);
+  CHECK(p.lines[2].ea_N == 384243000.0);
+  CHECK(p.solver.max_bisection_iterations == 200);  // the schema's default, as the module's
+}
