@@ -10,6 +10,7 @@
 //
 // A key without a default that the deck leaves out (an optional key) leaves its field as it is.
 // Binding a schema to a field of another type is a programming error (std::logic_error).
+#include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -26,8 +27,8 @@ namespace fowtsim::driver {
 template <class P>
 class DeckSection {
  public:
-  // A scalar key filling p.*field: double (number), int (integer), bool (boolean), std::string
-  // (string or choice), Vec3 (three numbers).
+  // A scalar key filling p.*field: double (number), int or std::uint64_t (integer), bool (boolean),
+  // std::string (string or choice), Vec3 (three numbers).
   template <class T>
   DeckSection& key(std::string name, io::Schema schema, T P::*field) {
     check_type<T>(name, schema);
@@ -42,6 +43,12 @@ class DeckSection {
     add(std::move(name), std::move(schema), [field, convert](const io::ValidatedDeck& d, const std::string& k, P& p) {
       p.*field = convert(d.string(k));
     });
+    return *this;
+  }
+  // A key whose reading needs more than its value (a path relative to the deck file): read(d, key, p).
+  template <class Read>
+  DeckSection& custom(std::string name, io::Schema schema, Read read) {
+    add(std::move(name), std::move(schema), std::move(read));
     return *this;
   }
   // A nested mapping read into p.*field (optional: absent leaves the field's defaults).
@@ -85,6 +92,7 @@ class DeckSection {
   static T value(const io::ValidatedDeck& d, const std::string& k) {
     if constexpr (std::is_same_v<T, double>) return d.number(k);
     else if constexpr (std::is_same_v<T, int>) return static_cast<int>(d.integer(k));
+    else if constexpr (std::is_same_v<T, std::uint64_t>) return static_cast<std::uint64_t>(d.integer(k));
     else if constexpr (std::is_same_v<T, bool>) return d.boolean(k);
     else if constexpr (std::is_same_v<T, std::string>) return d.string(k);
     else return vec3(d, k);
@@ -94,7 +102,7 @@ class DeckSection {
     using io::SchemaType;
     const SchemaType t = schema.spec().type;
     const bool ok = std::is_same_v<T, double>        ? t == SchemaType::number
-                    : std::is_same_v<T, int>         ? t == SchemaType::integer
+                    : std::is_same_v<T, int> || std::is_same_v<T, std::uint64_t> ? t == SchemaType::integer
                     : std::is_same_v<T, bool>        ? t == SchemaType::boolean
                     : std::is_same_v<T, std::string> ? (t == SchemaType::string || t == SchemaType::choice)
                     : std::is_same_v<T, Vec3>        ? t == SchemaType::sequence
