@@ -28,12 +28,23 @@ template <class P>
 class DeckSection {
  public:
   // A scalar key filling p.*field: double (number), int or std::uint64_t (integer), bool (boolean),
-  // std::string (string or choice), Vec3 (three numbers).
+  // std::string (string or choice), Vec3 (three numbers), std::vector<double> (numbers).
   template <class T>
   DeckSection& key(std::string name, io::Schema schema, T P::*field) {
     check_type<T>(name, schema);
     add(std::move(name), std::move(schema), [field](const io::ValidatedDeck& d, const std::string& k, P& p) {
       p.*field = value<T>(d, k);
+    });
+    return *this;
+  }
+  // A scalar key filling the field access(p) returns (an array element, a nested member).
+  template <class Access>
+    requires std::is_lvalue_reference_v<std::invoke_result_t<Access, P&>>
+  DeckSection& key(std::string name, io::Schema schema, Access access) {
+    using T = std::remove_reference_t<std::invoke_result_t<Access, P&>>;
+    check_type<T>(name, schema);
+    add(std::move(name), std::move(schema), [access](const io::ValidatedDeck& d, const std::string& k, P& p) {
+      access(p) = value<T>(d, k);
     });
     return *this;
   }
@@ -95,6 +106,7 @@ class DeckSection {
     else if constexpr (std::is_same_v<T, std::uint64_t>) return static_cast<std::uint64_t>(d.integer(k));
     else if constexpr (std::is_same_v<T, bool>) return d.boolean(k);
     else if constexpr (std::is_same_v<T, std::string>) return d.string(k);
+    else if constexpr (std::is_same_v<T, std::vector<double>>) return d.numbers(k);
     else return vec3(d, k);
   }
   template <class T>
@@ -105,7 +117,7 @@ class DeckSection {
                     : std::is_same_v<T, int> || std::is_same_v<T, std::uint64_t> ? t == SchemaType::integer
                     : std::is_same_v<T, bool>        ? t == SchemaType::boolean
                     : std::is_same_v<T, std::string> ? (t == SchemaType::string || t == SchemaType::choice)
-                    : std::is_same_v<T, Vec3>        ? t == SchemaType::sequence
+                    : std::is_same_v<T, Vec3> || std::is_same_v<T, std::vector<double>> ? t == SchemaType::sequence
                                                      : false;
     if (!ok) throw std::logic_error("deck key " + name + ": its schema's type does not fit the field it fills");
   }

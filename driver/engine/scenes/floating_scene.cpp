@@ -133,8 +133,7 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck) : structure_(structu
   }
   if (deck.has("blades")) blades_.emplace(deck, model_, rotor_ ? &*rotor_ : nullptr);
   stage_loads_ = std::make_unique<StageLoads>(model_, *sea_, rotor_ ? &*rotor_ : nullptr, blades_ ? &*blades_ : nullptr);
-  if (deck.has("structure.initial_conditions"))
-    initial_pitch_rad_ = deck.number("structure.initial_conditions.blade_pitch_deg") * std::numbers::pi / 180.0;
+  initial_pitch_rad_ = structure_.initial_conditions.blade_pitch_deg * std::numbers::pi / 180.0;
 
   // Channels in module order; the controller's GenSpeed comes from the multibody.
   auto add_block = [&](Block& block, const std::vector<ChannelInfo>& channels) {

@@ -84,6 +84,8 @@ struct InitialConditions {
   double azimuth_deg = 0.0;               // Azimuth: blade 1 up at 0, + about the shaft axis (downwind) [deg]
   double rotor_speed_rpm = 0.0;           // RotSpeed [rpm]; negative spins backwards
   double nacelle_yaw_deg = 0.0;           // NacYaw [deg] (fixed yaw, or start of a prescribed one)
+  double blade_pitch_deg = 0.0;           // BlPitch [deg]: every blade's, held until the controller's first call
+                                          // (the rotor aerodynamics and the flexible blades take it; the chain does not)
 };
 
 // Which DOFs a load case frees (ElastoDyn's PtfmSgDOF … GenDOF switches). A held platform DOF
