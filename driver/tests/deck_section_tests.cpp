@@ -4,8 +4,10 @@
 
 #include <catch2/catch.hpp>
 
+#include "decks/controller_deck.hpp"
 #include "decks/deck_section.hpp"
 #include "decks/mooring_deck.hpp"
+#include "fowtsim/core/error.hpp"
 #include "fowtsim/io/deck.hpp"
 #include "fowtsim/testing/skip.hpp"
 
@@ -84,4 +86,28 @@ TEST_CASE("the mooring section's schema and reader agree with the OC3 deck", "[u
   CHECK(p.lines[0].unstretched_length_m == 902.2);
   CHECK(p.lines[2].ea_N == 384243000.0);
   CHECK(p.solver.max_bisection_iterations == 200);  // the schema's default, as the module's
+}
+
+TEST_CASE("the controller section fills the baseline law, and a DISCON library relative to its deck", "[unit][decks]") {
+  const auto dir = testing::scratch_dir("deck_section_controller");
+  auto section = [&](const std::string& yaml) {
+    std::ofstream(dir / "deck.yaml") << yaml;
+    return io::read_deck(Schema::map({{"controller", controller_schema()}}), dir / "deck.yaml").section("controller");
+  };
+  // One key, both laws' fields: the pitch limit lands in the baseline parameters here.
+  const ControllerParams baseline = controller_params(section("controller: {max_pitch_rad: 1.2, integral_gain: 0.01}\n"));
+  REQUIRE(std::holds_alternative<control::BaselineParams>(baseline));
+  CHECK(std::get<control::BaselineParams>(baseline).max_pitch_rad == 1.2);
+  CHECK(std::get<control::BaselineParams>(baseline).integral_gain == 0.01);
+  CHECK(std::get<control::BaselineParams>(baseline).rated_power_W == control::BaselineParams{}.rated_power_W);  // default
+  const std::string missing = [&] {
+    try {
+      controller_params(section("controller: {type: discon, library: libnothere.so}\n"));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  }();
+  CHECK_THAT(missing, Catch::Contains((dir / "libnothere.so").lexically_normal().string()));  // resolved beside the deck
+  CHECK_THROWS_WITH(controller_params(section("controller: {type: discon}\n")), Catch::Contains("type discon needs `library`"));
 }

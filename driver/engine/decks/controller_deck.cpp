@@ -3,85 +3,101 @@
 #include <filesystem>
 
 #include "decks/deck_helpers.hpp"
+#include "decks/deck_section.hpp"
 #include "fowtsim/core/error.hpp"
 
 namespace fowtsim::driver {
 
 using io::Schema;
+using control::BaselineParams;
+using control::ExternalSettings;
 
-Schema controller_schema() {
-  const control::BaselineParams d{};  // the land-based NREL 5MW values as defaults
-  auto num = [](double v, const char* doc) { return Schema::number().default_value(v).doc(doc); };
-  return Schema::map({
-      {"type", Schema::choice({"baseline", "discon"}).default_value("baseline").doc("built-in NREL 5MW law or a DISCON library")},
-      {"sample_time_s", num(d.sample_time_s, "controller sample time (0: every call)")},
-      {"filter_corner_rad_s", num(d.filter_corner_rad_s, "generator-speed low-pass corner")},
-      {"cut_in_speed_rad_s", num(d.cut_in_speed_rad_s, "VS_CtInSp (HSS)")},
-      {"region2_start_speed_rad_s", num(d.region2_start_speed_rad_s, "VS_Rgn2Sp")},
-      {"region2_gain_N_m_s2", num(d.region2_gain_N_m_s2, "VS_Rgn2K")},
-      {"rated_generator_speed_rad_s", num(d.rated_generator_speed_rad_s, "VS_RtGnSp")},
-      {"rated_power_W", num(d.rated_power_W, "VS_RtPwr")},
-      {"slip_percent", num(d.slip_percent, "VS_SlPc")},
-      {"max_torque_N_m", num(d.max_torque_N_m, "VS_MaxTq")},
-      {"max_torque_rate_N_m_s", num(d.max_torque_rate_N_m_s, "VS_MaxRat")},
-      {"region3_min_pitch_rad", num(d.region3_min_pitch_rad, "VS_Rgn3MP")},
-      {"region3_torque", Schema::choice({"constant_power", "constant_torque"}).default_value("constant_power").doc("torque above rated")},
-      {"reference_speed_rad_s", num(d.reference_speed_rad_s, "PC_RefSpd")},
-      {"proportional_gain_s", num(d.proportional_gain_s, "PC_KP")},
-      {"integral_gain", num(d.integral_gain, "PC_KI")},
-      {"gain_schedule_pitch_rad", num(d.gain_schedule_pitch_rad, "PC_KK")},
-      {"min_pitch_rad", num(d.min_pitch_rad, "PC_MinPit")},
-      {"max_pitch_rad", num(d.max_pitch_rad, "PC_MaxPit")},
-      {"max_pitch_rate_rad_s", num(d.max_pitch_rate_rad_s, "PC_MaxRat")},
-      {"generator_efficiency", num(d.generator_efficiency, "for GenPwr")},
-      {"library", Schema::string().optional().doc("DISCON shared library (type discon), relative to this deck")},
-      {"procedure", Schema::string().default_value("DISCON").doc("exported procedure name (type discon)")},
-      {"infile", Schema::string().default_value("").doc("the controller's own input file, passed through (type discon)")},
-  });
+namespace {
+
+// What the section fills: the type, and the parameters of either law.
+struct ControllerDeck {
+  std::string type;
+  BaselineParams baseline;
+  ExternalSettings external;
+  bool has_library = false;
+};
+
+// A key of the built-in law: BaselineParams::*field, its default the land-based NREL 5MW value.
+using BaselineField = double BaselineParams::*;
+// Pitch limits and efficiency serve both laws (DISCON records 6–9, GenPwr): one key, two fields.
+using SharedField = std::pair<double BaselineParams::*, double ExternalSettings::*>;
+
+// Each key once: name, schema and the field it fills (decks/deck_section.hpp).
+const DeckSection<ControllerDeck>& controller_section() {
+  static const DeckSection<ControllerDeck> section = [] {
+    const BaselineParams d{};
+    auto baseline = [&](DeckSection<ControllerDeck>& s, const char* key, BaselineField field, const char* doc) {
+      s.key(key, Schema::number().default_value(d.*field).doc(doc), [field](ControllerDeck& c) -> double& { return c.baseline.*field; });
+    };
+    auto shared = [&](DeckSection<ControllerDeck>& s, const char* key, SharedField fields, const char* doc) {
+      s.custom(key, Schema::number().default_value(d.*fields.first).doc(doc),
+               [fields](const io::ValidatedDeck& deck, const std::string& k, ControllerDeck& c) {
+                 c.baseline.*fields.first = c.external.*fields.second = deck.number(k);
+               });
+    };
+    DeckSection<ControllerDeck> s;
+    s.key("type", Schema::choice({"baseline", "discon"}).default_value("baseline").doc("built-in NREL 5MW law or a DISCON library"),
+          &ControllerDeck::type);
+    baseline(s, "sample_time_s", &BaselineParams::sample_time_s, "controller sample time (0: every call)");
+    baseline(s, "filter_corner_rad_s", &BaselineParams::filter_corner_rad_s, "generator-speed low-pass corner");
+    baseline(s, "cut_in_speed_rad_s", &BaselineParams::cut_in_speed_rad_s, "VS_CtInSp (HSS)");
+    baseline(s, "region2_start_speed_rad_s", &BaselineParams::region2_start_speed_rad_s, "VS_Rgn2Sp");
+    baseline(s, "region2_gain_N_m_s2", &BaselineParams::region2_gain_N_m_s2, "VS_Rgn2K");
+    baseline(s, "rated_generator_speed_rad_s", &BaselineParams::rated_generator_speed_rad_s, "VS_RtGnSp");
+    baseline(s, "rated_power_W", &BaselineParams::rated_power_W, "VS_RtPwr");
+    baseline(s, "slip_percent", &BaselineParams::slip_percent, "VS_SlPc");
+    baseline(s, "max_torque_N_m", &BaselineParams::max_torque_N_m, "VS_MaxTq");
+    baseline(s, "max_torque_rate_N_m_s", &BaselineParams::max_torque_rate_N_m_s, "VS_MaxRat");
+    baseline(s, "region3_min_pitch_rad", &BaselineParams::region3_min_pitch_rad, "VS_Rgn3MP");
+    s.key("region3_torque", Schema::choice({"constant_power", "constant_torque"}).default_value("constant_power").doc("torque above rated"),
+          [](ControllerDeck& c) -> control::Region3Torque& { return c.baseline.region3_torque; }, control::region3_torque_from_name);
+    baseline(s, "reference_speed_rad_s", &BaselineParams::reference_speed_rad_s, "PC_RefSpd");
+    baseline(s, "proportional_gain_s", &BaselineParams::proportional_gain_s, "PC_KP");
+    baseline(s, "integral_gain", &BaselineParams::integral_gain, "PC_KI");
+    baseline(s, "gain_schedule_pitch_rad", &BaselineParams::gain_schedule_pitch_rad, "PC_KK");
+    shared(s, "min_pitch_rad", {&BaselineParams::min_pitch_rad, &ExternalSettings::min_pitch_rad}, "PC_MinPit");
+    shared(s, "max_pitch_rad", {&BaselineParams::max_pitch_rad, &ExternalSettings::max_pitch_rad}, "PC_MaxPit");
+    shared(s, "max_pitch_rate_rad_s", {&BaselineParams::max_pitch_rate_rad_s, &ExternalSettings::max_pitch_rate_rad_s}, "PC_MaxRat");
+    shared(s, "generator_efficiency", {&BaselineParams::generator_efficiency, &ExternalSettings::generator_efficiency}, "for GenPwr");
+    s.custom("library", Schema::string().optional().doc("DISCON shared library (type discon), relative to this deck"),
+             [](const io::ValidatedDeck& deck, const std::string& k, ControllerDeck& c) {
+               // Relative to the deck file, made absolute: a bare `libX.so` must not go to the system search path.
+               const std::filesystem::path lib = deck.string(k);
+               c.external.library_path =
+                   std::filesystem::absolute(lib.is_absolute() ? lib : std::filesystem::path(deck.location(k).file).parent_path() / lib)
+                       .lexically_normal()
+                       .string();
+               c.has_library = true;
+             })
+        .key("procedure", Schema::string().default_value("DISCON").doc("exported procedure name (type discon)"),
+             [](ControllerDeck& c) -> std::string& { return c.external.procedure; })
+        .key("infile", Schema::string().default_value("").doc("the controller's own input file, passed through (type discon)"),
+             [](ControllerDeck& c) -> std::string& { return c.external.infile; });
+    return s;
+  }();
+  return section;
 }
+
+}  // namespace
+
+Schema controller_schema() { return controller_section().schema(); }
 
 ControllerParams controller_params(const io::ValidatedDeck& c) {
   try {
-    if (c.string("type") == "discon") {
-      if (!c.has("library"))
+    ControllerDeck deck;
+    controller_section().read_into(c, deck);
+    if (deck.type == "discon") {
+      if (!deck.has_library)
         throw InputError({"control", std::nullopt, "controller.library", "a DISCON library path"}, "type discon needs `library`");
-      control::ExternalSettings s;
-      const std::filesystem::path lib = c.string("library");
-      // Relative to the deck file, made absolute: a bare `libX.so` must not go to the system search path.
-      s.library_path = std::filesystem::absolute(lib.is_absolute() ? lib : std::filesystem::path(c.location("library").file).parent_path() / lib)
-                           .lexically_normal()
-                           .string();
-      s.procedure = c.string("procedure");
-      s.infile = c.string("infile");
-      s.min_pitch_rad = c.number("min_pitch_rad");
-      s.max_pitch_rad = c.number("max_pitch_rad");
-      s.max_pitch_rate_rad_s = c.number("max_pitch_rate_rad_s");
-      s.generator_efficiency = c.number("generator_efficiency");
-      return control::ExternalController::make_params(s);
+      return control::ExternalController::make_params(deck.external);
     }
-    control::BaselineParams p;
-    p.sample_time_s = c.number("sample_time_s");
-    p.filter_corner_rad_s = c.number("filter_corner_rad_s");
-    p.cut_in_speed_rad_s = c.number("cut_in_speed_rad_s");
-    p.region2_start_speed_rad_s = c.number("region2_start_speed_rad_s");
-    p.region2_gain_N_m_s2 = c.number("region2_gain_N_m_s2");
-    p.rated_generator_speed_rad_s = c.number("rated_generator_speed_rad_s");
-    p.rated_power_W = c.number("rated_power_W");
-    p.slip_percent = c.number("slip_percent");
-    p.max_torque_N_m = c.number("max_torque_N_m");
-    p.max_torque_rate_N_m_s = c.number("max_torque_rate_N_m_s");
-    p.region3_min_pitch_rad = c.number("region3_min_pitch_rad");
-    p.region3_torque = control::region3_torque_from_name(c.string("region3_torque"));
-    p.reference_speed_rad_s = c.number("reference_speed_rad_s");
-    p.proportional_gain_s = c.number("proportional_gain_s");
-    p.integral_gain = c.number("integral_gain");
-    p.gain_schedule_pitch_rad = c.number("gain_schedule_pitch_rad");
-    p.min_pitch_rad = c.number("min_pitch_rad");
-    p.max_pitch_rad = c.number("max_pitch_rad");
-    p.max_pitch_rate_rad_s = c.number("max_pitch_rate_rad_s");
-    p.generator_efficiency = c.number("generator_efficiency");
-    control::validate(p);
-    return p;
+    control::validate(deck.baseline);
+    return deck.baseline;
   } catch (const InputError& e) {
     rethrow_located(c, e);
   }

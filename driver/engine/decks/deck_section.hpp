@@ -27,32 +27,25 @@ namespace fowtsim::driver {
 template <class P>
 class DeckSection {
  public:
-  // A scalar key filling p.*field: double (number), int or std::uint64_t (integer), bool (boolean),
-  // std::string (string or choice), Vec3 (three numbers), std::vector<double> (numbers).
-  template <class T>
-  DeckSection& key(std::string name, io::Schema schema, T P::*field) {
+  // A scalar key filling the field `field` names: a member pointer (&P::x) or an accessor that
+  // returns a reference (an array element, a member of a member). Types: double (number), int or
+  // std::uint64_t (integer), bool (boolean), std::string (string or choice), Vec3 (three
+  // numbers), std::vector<double> (numbers).
+  template <class Field>
+    requires std::is_lvalue_reference_v<std::invoke_result_t<Field, P&>>
+  DeckSection& key(std::string name, io::Schema schema, Field field) {
+    using T = std::remove_cvref_t<std::invoke_result_t<Field, P&>>;
     check_type<T>(name, schema);
     add(std::move(name), std::move(schema), [field](const io::ValidatedDeck& d, const std::string& k, P& p) {
-      p.*field = value<T>(d, k);
-    });
-    return *this;
-  }
-  // A scalar key filling the field access(p) returns (an array element, a nested member).
-  template <class Access>
-    requires std::is_lvalue_reference_v<std::invoke_result_t<Access, P&>>
-  DeckSection& key(std::string name, io::Schema schema, Access access) {
-    using T = std::remove_reference_t<std::invoke_result_t<Access, P&>>;
-    check_type<T>(name, schema);
-    add(std::move(name), std::move(schema), [access](const io::ValidatedDeck& d, const std::string& k, P& p) {
-      access(p) = value<T>(d, k);
+      std::invoke(field, p) = value<T>(d, k);
     });
     return *this;
   }
   // A key whose text names a value of another type (an enum): convert(text) gives it.
-  template <class T, class Convert>
-  DeckSection& key(std::string name, io::Schema schema, T P::*field, Convert convert) {
+  template <class Field, class Convert>
+  DeckSection& key(std::string name, io::Schema schema, Field field, Convert convert) {
     add(std::move(name), std::move(schema), [field, convert](const io::ValidatedDeck& d, const std::string& k, P& p) {
-      p.*field = convert(d.string(k));
+      std::invoke(field, p) = convert(d.string(k));
     });
     return *this;
   }
