@@ -3,7 +3,8 @@
 //
 // A module is a type that names four plain-data types and four pure functions:
 //   Params  immutable, built once from the deck and validated there;
-//   State   what the module integrates; plain, copyable (retry a step, checkpoint, perturb);
+//   State   what the module integrates; plain, copyable (retry a step, checkpoint, perturb), with
+//           a field list beside it (core/fields.hpp) when it is not trivially copyable;
 //   Input   what the driver hands in (motions of attachment points, inflow, commands);
 //   Output  what it hands back (loads at attachment points, measured signals, channel values).
 // make_state(params)                  -> initial State
