@@ -31,6 +31,11 @@ Mat6 mat6(const io::ValidatedDeck& deck, const std::string& path) {
   return m;
 }
 
+std::filesystem::path beside_deck(const io::ValidatedDeck& deck, const std::string& key) {
+  const std::filesystem::path file = deck.string(key);
+  return file.is_absolute() ? file : std::filesystem::path(deck.location(key).file).parent_path() / file;
+}
+
 std::string where(const io::ValidatedDeck& deck, const std::string& path) {
   const io::SourceLocation loc = deck.location(path);
   const std::string full = deck.path().empty() ? path : deck.path() + "." + path;

@@ -61,11 +61,6 @@ Schema potential_flow_schema() {
   });
 }
 
-std::filesystem::path beside_deck(const io::ValidatedDeck& d, const std::string& key) {
-  const std::filesystem::path file = d.string(key);
-  return file.is_absolute() ? file : std::filesystem::path(d.location(key).file).parent_path() / file;
-}
-
 }  // namespace
 
 Schema hydro_schema() {
