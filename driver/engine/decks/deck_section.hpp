@@ -33,8 +33,8 @@ class DeckSection {
   // A scalar key filling the field std::invoke(field, p) names: a member pointer (of P or of a base
   // of P) or an accessor returning a reference (an array element, a nested member). Types: double
   // (number), int or std::uint64_t (integer), bool (boolean), std::string (string or choice), Vec3,
-  // Vec6, Mat6 (36 numbers, row by row), std::vector<double> and std::vector<std::array<double, N>>
-  // (sequences), std::optional of any of these (an optional key).
+  // Vec6, Mat6 (36 numbers, row by row), std::vector<double>, std::array<double, N> (sequences of
+  // numbers), std::vector of any of these (a sequence of them), std::optional of any (an optional key).
   template <class Field>
   DeckSection& key(std::string name, io::Schema schema, Field field) {
     using T = std::remove_cvref_t<std::invoke_result_t<Field, P&>>;
@@ -110,9 +110,13 @@ class DeckSection {
   template <class T>
   struct is_optional<std::optional<T>> : std::true_type {};
   template <class T>
-  struct is_point_list : std::false_type {};
+  struct is_vector : std::false_type {};
+  template <class T>
+  struct is_vector<std::vector<T>> : std::true_type {};
+  template <class T>
+  struct is_array : std::false_type {};
   template <std::size_t N>
-  struct is_point_list<std::vector<std::array<double, N>>> : std::true_type {};
+  struct is_array<std::array<double, N>> : std::true_type {};
 
   template <class T>
   static T value(const io::ValidatedDeck& d, const std::string& k) {
@@ -123,14 +127,14 @@ class DeckSection {
     else if constexpr (std::is_same_v<T, bool>) return d.boolean(k);
     else if constexpr (std::is_same_v<T, std::string>) return d.string(k);
     else if constexpr (std::is_same_v<T, std::vector<double>>) return d.numbers(k);
-    else if constexpr (is_point_list<T>::value) {
+    else if constexpr (is_array<T>::value) {
+      const std::vector<double> v = d.numbers(k);
       T out;
-      for (std::size_t i = 0; i < d.size(k); ++i) {
-        const std::vector<double> v = d.numbers(fmt::format("{}[{}]", k, i));
-        typename T::value_type point;
-        std::copy_n(v.begin(), point.size(), point.begin());
-        out.push_back(point);
-      }
+      std::copy_n(v.begin(), out.size(), out.begin());
+      return out;
+    } else if constexpr (is_vector<T>::value) {
+      T out;
+      for (std::size_t i = 0; i < d.size(k); ++i) out.push_back(value<typename T::value_type>(d, fmt::format("{}[{}]", k, i)));
       return out;
     } else if constexpr (std::is_same_v<T, Vec6>) return vec6(d, k);
     else if constexpr (std::is_same_v<T, Mat6>) return mat6(d, k);
@@ -138,21 +142,28 @@ class DeckSection {
   }
   template <class T>
   static void check_type(const std::string& name, const io::Schema& schema) {
+    using io::SchemaType;
+    const io::SchemaSpec& spec = schema.spec();
     if constexpr (is_optional<T>::value) {
       check_type<typename T::value_type>(name, schema);
+    } else if constexpr (is_vector<T>::value && !std::is_same_v<T, std::vector<double>>) {
+      if (spec.type != SchemaType::sequence) type_error(name);
+      check_type<typename T::value_type>(name, *spec.element);
     } else {
-      using io::SchemaType;
-      const SchemaType t = schema.spec().type;
+      const SchemaType t = spec.type;
       const bool ok = std::is_same_v<T, double>        ? t == SchemaType::number
                       : std::is_same_v<T, int> || std::is_same_v<T, std::uint64_t> ? t == SchemaType::integer
                       : std::is_same_v<T, bool>        ? t == SchemaType::boolean
                       : std::is_same_v<T, std::string> ? (t == SchemaType::string || t == SchemaType::choice)
                       : std::is_same_v<T, Vec3> || std::is_same_v<T, Vec6> || std::is_same_v<T, Mat6> ||
-                              std::is_same_v<T, std::vector<double>> || is_point_list<T>::value
+                              std::is_same_v<T, std::vector<double>> || is_array<T>::value
                           ? t == SchemaType::sequence
                           : false;
-      if (!ok) throw std::logic_error("deck key " + name + ": its schema's type does not fit the field it fills");
+      if (!ok) type_error(name);
     }
+  }
+  [[noreturn]] static void type_error(const std::string& name) {
+    throw std::logic_error("deck key " + name + ": its schema's type does not fit the field it fills");
   }
 
   std::vector<io::SchemaField> fields_;
