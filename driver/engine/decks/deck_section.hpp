@@ -76,12 +76,21 @@ class DeckSection {
         });
     return *this;
   }
-  // A sequence of mappings, each read into one element of the std::vector<Q> field (named as for key()).
+  // A sequence of mappings, each read into one element of the std::vector<Q> field (named as for
+  // key()); an optional key when the field is a std::optional<std::vector<Q>>.
   template <class Q, class Field>
   DeckSection& list(std::string name, const DeckSection<Q>& item, Field field, std::size_t min_items, std::string doc) {
-    add(std::move(name), io::Schema::sequence(item.schema()).min_items(min_items).doc(std::move(doc)),
+    constexpr bool optional = is_optional<std::remove_cvref_t<std::invoke_result_t<Field, P&>>>::value;
+    const io::Schema schema = io::Schema::sequence(item.schema()).min_items(min_items).doc(std::move(doc));
+    add(std::move(name), optional ? schema.optional() : schema,
         [item, field](const io::ValidatedDeck& d, const std::string& k, P& p) {
-          std::vector<Q>& target = std::invoke(field, p);
+          auto& f = std::invoke(field, p);
+          std::vector<Q>& target = [&]() -> std::vector<Q>& {
+            if constexpr (optional)
+              return f.emplace();
+            else
+              return f;
+          }();
           target.clear();
           for (std::size_t i = 0; i < d.size(k); ++i) {
             Q q{};
@@ -89,6 +98,16 @@ class DeckSection {
             target.push_back(q);
           }
         });
+    return *this;
+  }
+  // The keys of `base`, a section of a base class of P, here in their order (a section that has
+  // the keys of another and more).
+  template <class Q>
+    requires std::is_base_of_v<Q, P>
+  DeckSection& keys_of(const DeckSection<Q>& base) {
+    for (std::size_t i = 0; i < base.fields_.size(); ++i)
+      add(base.fields_[i].key, base.fields_[i].schema,
+          [read = base.readers_[i]](const io::ValidatedDeck& d, const std::string& k, P& p) { read(d, k, p); });
     return *this;
   }
 
@@ -100,6 +119,8 @@ class DeckSection {
   }
 
  private:
+  template <class>
+  friend class DeckSection;
   using Reader = std::function<void(const io::ValidatedDeck&, const std::string&, P&)>;
   void add(std::string name, io::Schema schema, Reader reader) {
     fields_.push_back({std::move(name), std::move(schema)});
