@@ -23,12 +23,16 @@ Vec6 vec6(const io::ValidatedDeck& deck, const std::string& path) {
 }
 
 Mat6 mat6(const io::ValidatedDeck& deck, const std::string& path) {
-  Mat6 m = Mat6::Zero();
-  if (!deck.has(path)) return m;
+  Mat6 m;
   const std::vector<double> v = deck.numbers(path);
   for (int r = 0; r < 6; ++r)
     for (int c = 0; c < 6; ++c) m(r, c) = v[6 * r + c];
   return m;
+}
+
+std::filesystem::path beside_deck(const io::ValidatedDeck& deck, const std::string& key) {
+  const std::filesystem::path file = deck.string(key);
+  return file.is_absolute() ? file : std::filesystem::path(deck.location(key).file).parent_path() / file;
 }
 
 std::string where(const io::ValidatedDeck& deck, const std::string& path) {

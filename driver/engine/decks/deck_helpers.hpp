@@ -1,7 +1,8 @@
 #pragma once
-// Small helpers shared by the deck-section readers: fixed-length vectors and matrices, and the
-// "file:line:col: key" prefix of a message about a value that passed the schema but not a
-// module's own validation.
+// Small helpers shared by the deck-section readers: fixed-length vectors and matrices, files named
+// relative to the deck, and the "file:line:col: key" prefix of a message about a value that passed
+// the schema but not a module's own validation.
+#include <filesystem>
 #include <string>
 
 #include "fowtsim/core/error.hpp"
@@ -17,7 +18,11 @@ io::Schema matrix6(const char* doc);
 
 Vec3 vec3(const io::ValidatedDeck& deck, const std::string& path);
 Vec6 vec6(const io::ValidatedDeck& deck, const std::string& path);
-Mat6 mat6(const io::ValidatedDeck& deck, const std::string& path);  // zero when absent
+Mat6 mat6(const io::ValidatedDeck& deck, const std::string& path);
+
+// The file a string key names: a relative path is taken from the directory of the deck file that
+// holds the key (decks include one another).
+std::filesystem::path beside_deck(const io::ValidatedDeck& deck, const std::string& key);
 
 // "file:line:col: path" of a value in the deck.
 std::string where(const io::ValidatedDeck& deck, const std::string& path);

@@ -5,7 +5,6 @@
 #include <charconv>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -16,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "decks/deck_helpers.hpp"
+#include "decks/deck_section.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/readers.hpp"
 
@@ -160,74 +160,71 @@ waves::ElevationRecord read_elevation_record(const std::filesystem::path& path) 
   return read_two_columns(path);
 }
 
+// Each key once: name, schema and the WaveParams field it fills (decks/deck_section.hpp).
+const DeckSection<waves::WaveParams>& waves_section() {
+  using waves::WaveParams;
+  static const DeckSection<WaveParams> section = [] {
+    DeckSection<WaveParams> w;
+    w.key("model", Schema::choice({"still", "regular", "jonswap", "pm", "elevation_series"}).default_value("still")
+                       .doc("still water, one Airy wave, an irregular sea (JONSWAP / Pierson–Moskowitz), or the "
+                            "sea rebuilt from a recorded elevation (elevation_series, OpenFAST WaveMod 5)"),
+          &WaveParams::model, waves::parse_wave_model)
+        // Read only for model elevation_series: `model` is declared above, so read_into has set it.
+        .custom("file", Schema::string().optional()
+                            .doc("elevation_series: η(t) at x = y = 0, relative to this deck — two columns (time s, "
+                                 "elevation m; '#' comments) or the Wave1Elev channel of an OpenFAST .out/.outb or our .h5; "
+                                 "uniform steps; its mean is removed, times are simulation times and the sea repeats "
+                                 "with the record length N·dt (duration_s and dt_s are not used)"),
+                [](const io::ValidatedDeck& d, const std::string& key, WaveParams& p) {
+                  if (p.model != waves::WaveModel::elevation_series) return;
+                  p.elevation_record = located(
+                      d, [&] { return std::make_shared<const waves::ElevationRecord>(read_elevation_record(beside_deck(d, key))); });
+                })
+        .key("hs_m", Schema::number().at_least(0.0).default_value(0.0).doc("significant wave height Hs = 4√m0 (irregular)"),
+             &WaveParams::hs_m)
+        .key("tp_s", Schema::number().greater_than(0.0).optional().doc("spectral peak period (irregular)"), &WaveParams::tp_s)
+        .key("gamma", Schema::number().at_least(1.0).optional().doc("JONSWAP peak shape; absent = IEC 61400-3 default"),
+             &WaveParams::gamma)
+        .key("rayleigh_amplitudes", Schema::boolean().default_value(false).doc("Rayleigh-random amplitudes (HydroDyn WaveNDAmp)"),
+             &WaveParams::rayleigh_amplitudes)
+        .key("seed", Schema::integer().at_least(0).default_value(1).doc("random seed of the phases"), &WaveParams::seed)
+        .key("duration_s", Schema::number().greater_than(0.0).default_value(3600.0).doc("record length; the sea repeats with it"),
+             &WaveParams::duration_s)
+        .key("dt_s", Schema::number().greater_than(0.0).default_value(0.25).doc("record time step (Nyquist bounds the spectrum)"),
+             &WaveParams::dt_s)
+        .key("cutoff_low_hz", Schema::number().at_least(0.0).default_value(0.0)
+                                  .doc("components below are dropped (irregular, elevation_series)"),
+             &WaveParams::cutoff_low_hz)
+        .key("cutoff_high_hz", Schema::number().greater_than(0.0).optional()
+                                   .doc("components above are dropped; absent = Nyquist (of the record for elevation_series)"),
+             &WaveParams::cutoff_high_hz)
+        .key("height_m", Schema::number().at_least(0.0).default_value(0.0).doc("regular wave height, crest to trough"),
+             &WaveParams::height_m)
+        .key("period_s", Schema::number().greater_than(0.0).optional().doc("regular wave period"), &WaveParams::period_s)
+        .key("phase_deg", Schema::number().default_value(0.0).doc("regular wave phase at the origin"), &WaveParams::phase_deg)
+        .key("heading_deg", Schema::number().default_value(0.0).doc("propagation direction, from +x towards +y"),
+             &WaveParams::heading_deg)
+        .key("depth_m", Schema::number().greater_than(0.0).optional().doc("water depth; absent = deep water"), &WaveParams::depth_m)
+        .key("stretching", Schema::choice({"none", "wheeler"}).default_value("none").doc("kinematics near the surface"),
+             &WaveParams::stretching, waves::parse_stretching)
+        .key("water_density_kg_m3", Schema::number().greater_than(0.0).default_value(1025.0).doc("water density"),
+             &WaveParams::water_density_kg_m3)
+        .key("gravity_m_s2", Schema::number().greater_than(0.0).default_value(9.80665).doc("gravity"), &WaveParams::gravity_m_s2)
+        .key("elevation_probes_m", Schema::sequence(number_vector(2, "x, y")).min_items(1).max_items(9).optional()
+                                       .doc("(x, y) of Wave1Elev … Wave9Elev; absent = the origin"),
+             &WaveParams::elevation_probes_m);
+    return w;
+  }();
+  return section;
+}
+
 }  // namespace
 
-Schema waves_schema() {
-  return Schema::map({
-      {"model", Schema::choice({"still", "regular", "jonswap", "pm", "elevation_series"}).default_value("still")
-                    .doc("still water, one Airy wave, an irregular sea (JONSWAP / Pierson–Moskowitz), or the "
-                         "sea rebuilt from a recorded elevation (elevation_series, OpenFAST WaveMod 5)")},
-      {"file", Schema::string().optional()
-                   .doc("elevation_series: η(t) at x = y = 0, relative to this deck — two columns (time s, "
-                        "elevation m; '#' comments) or the Wave1Elev channel of an OpenFAST .out/.outb or our .h5; "
-                        "uniform steps; its mean is removed, times are simulation times and the sea repeats "
-                        "with the record length N·dt (duration_s and dt_s are not used)")},
-      {"hs_m", Schema::number().at_least(0.0).default_value(0.0).doc("significant wave height Hs = 4√m0 (irregular)")},
-      {"tp_s", Schema::number().greater_than(0.0).optional().doc("spectral peak period (irregular)")},
-      {"gamma", Schema::number().at_least(1.0).optional().doc("JONSWAP peak shape; absent = IEC 61400-3 default")},
-      {"rayleigh_amplitudes", Schema::boolean().default_value(false).doc("Rayleigh-random amplitudes (HydroDyn WaveNDAmp)")},
-      {"seed", Schema::integer().at_least(0).default_value(1).doc("random seed of the phases")},
-      {"duration_s", Schema::number().greater_than(0.0).default_value(3600.0).doc("record length; the sea repeats with it")},
-      {"dt_s", Schema::number().greater_than(0.0).default_value(0.25).doc("record time step (Nyquist bounds the spectrum)")},
-      {"cutoff_low_hz", Schema::number().at_least(0.0).default_value(0.0).doc("components below are dropped (irregular, elevation_series)")},
-      {"cutoff_high_hz", Schema::number().greater_than(0.0).optional().doc("components above are dropped; absent = Nyquist (of the record for elevation_series)")},
-      {"height_m", Schema::number().at_least(0.0).default_value(0.0).doc("regular wave height, crest to trough")},
-      {"period_s", Schema::number().greater_than(0.0).optional().doc("regular wave period")},
-      {"phase_deg", Schema::number().default_value(0.0).doc("regular wave phase at the origin")},
-      {"heading_deg", Schema::number().default_value(0.0).doc("propagation direction, from +x towards +y")},
-      {"depth_m", Schema::number().greater_than(0.0).optional().doc("water depth; absent = deep water")},
-      {"stretching", Schema::choice({"none", "wheeler"}).default_value("none").doc("kinematics near the surface")},
-      {"water_density_kg_m3", Schema::number().greater_than(0.0).default_value(1025.0).doc("water density")},
-      {"gravity_m_s2", Schema::number().greater_than(0.0).default_value(9.80665).doc("gravity")},
-      {"elevation_probes_m", Schema::sequence(number_vector(2, "x, y")).min_items(1).max_items(9).optional()
-                                 .doc("(x, y) of Wave1Elev … Wave9Elev; absent = the origin")},
-  });
-}
+Schema waves_schema() { return waves_section().schema(); }
 
 waves::WaveParams wave_params(const io::ValidatedDeck& d) {
   waves::WaveParams p;
-  p.model = waves::parse_wave_model(d.string("model"));
-  p.hs_m = d.number("hs_m");
-  if (d.has("tp_s")) p.tp_s = d.number("tp_s");
-  if (d.has("gamma")) p.gamma = d.number("gamma");
-  p.rayleigh_amplitudes = d.boolean("rayleigh_amplitudes");
-  p.seed = static_cast<std::uint64_t>(d.integer("seed"));
-  p.duration_s = d.number("duration_s");
-  p.dt_s = d.number("dt_s");
-  p.cutoff_low_hz = d.number("cutoff_low_hz");
-  if (d.has("cutoff_high_hz")) p.cutoff_high_hz = d.number("cutoff_high_hz");
-  p.height_m = d.number("height_m");
-  if (d.has("period_s")) p.period_s = d.number("period_s");
-  p.phase_deg = d.number("phase_deg");
-  p.heading_deg = d.number("heading_deg");
-  p.depth_m = d.has("depth_m") ? d.number("depth_m") : std::numeric_limits<double>::infinity();
-  p.stretching = waves::parse_stretching(d.string("stretching"));
-  p.water_density_kg_m3 = d.number("water_density_kg_m3");
-  p.gravity_m_s2 = d.number("gravity_m_s2");
-  if (d.has("elevation_probes_m")) {
-    p.elevation_probes_m.clear();
-    for (std::size_t i = 0; i < d.size("elevation_probes_m"); ++i) {
-      const std::vector<double> xy = d.numbers(fmt::format("elevation_probes_m[{}]", i));
-      p.elevation_probes_m.push_back({xy[0], xy[1]});
-    }
-  }
-  if (p.model == waves::WaveModel::elevation_series && d.has("file")) {
-    // As the wind deck's `.bts`: a relative path is taken from the deck file that names it.
-    const std::filesystem::path file = d.string("file");
-    const std::filesystem::path path =
-        file.is_absolute() ? file : std::filesystem::path(d.location("file").file).parent_path() / file;
-    p.elevation_record = located(d, [&] { return std::make_shared<const waves::ElevationRecord>(read_elevation_record(path)); });
-  }
+  waves_section().read_into(d, p);
   located(d, [&] { waves::validate(p); });
   return p;
 }

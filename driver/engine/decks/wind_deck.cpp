@@ -1,7 +1,5 @@
 #include "decks/wind_deck.hpp"
 
-#include <filesystem>
-
 #include "decks/deck_helpers.hpp"
 #include "decks/deck_section.hpp"
 #include "fowtsim/core/error.hpp"
@@ -47,10 +45,7 @@ const DeckSection<WindParams>& wind_section() {
              &WindParams::direction_deg)
         .key("upflow_deg", Schema::number().default_value(0.0).doc("upflow angle"), &WindParams::upflow_deg)
         .custom("file", Schema::string().optional().doc("TurbSim .bts file (model bts), relative to this deck"),
-                [](const io::ValidatedDeck& d, const std::string& key, WindParams& p) {
-                  const std::filesystem::path file = d.string(key);
-                  p.file = (file.is_absolute() ? file : std::filesystem::path(d.location(key).file).parent_path() / file).string();
-                })
+                [](const io::ValidatedDeck& d, const std::string& key, WindParams& p) { p.file = beside_deck(d, key).string(); })
         .key("probe_point_m", number_vector(3, "point of Wind1VelX/Y/Z, inertial").optional(), &WindParams::probe_point_m)
         .section("turbulence", t, &WindParams::turbulence, true, "generator settings (model turbulent)");
     return w;

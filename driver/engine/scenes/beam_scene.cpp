@@ -15,6 +15,12 @@ namespace {
 
 using io::Schema;
 
+// The `beam:` keys (decks/beam_deck.hpp): 48 finite volumes unless the deck says, at most 100,000.
+const DeckSection<BeamKeys>& beam_keys() {
+  static const DeckSection<BeamKeys> section = beam_section(48, 100000);
+  return section;
+}
+
 Schema loads_schema() {
   return Schema::map({
       {"distributed_force_N_m", number_vector(3, "dead distributed force per length, global frame").optional()},
@@ -40,7 +46,7 @@ Schema beam_scene_schema() {
                          {"dt_s", Schema::number().unit("s").greater_than(0.0).default_value(0.005).doc("beam time step (dynamic)")},
                      }).doc("static or dynamic analysis")},
       {"output", output_schema().optional().doc("what to write (BeamDyn channel names)")},
-      {"beam", Schema::map(beam_schema_fields(48, 100000)).doc("the beam: reference line, sections, damping, discretisation")},
+      {"beam", beam_keys().schema().doc("the beam: reference line, sections, damping, discretisation")},
       {"root", Schema::map({
                    {"position_m", number_vector(3, "root position, global frame").optional()},
                    {"angular_velocity_rad_s", number_vector(3, "constant angular velocity of the root about the global origin").optional()},
@@ -52,8 +58,9 @@ Schema beam_scene_schema() {
 
 RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& progress) {
   const io::ValidatedDeck deck = io::read_deck(beam_scene_schema(), request.deck_path);
-  const io::ValidatedDeck b = deck.section("beam");
-  BeamDynSetup setup{.definition = beam_definition(deck, "beam")};
+  BeamKeys beam;
+  beam_keys().read_into(deck.section("beam"), beam);
+  BeamDynSetup setup{.definition = beam_definition(deck, "beam", beam)};
   setup.root_position_m = vec3_or_zero(deck, "root.position_m");
   setup.angular_velocity_rad_s = vec3_or_zero(deck, "root.angular_velocity_rad_s");
   setup.gravity_m_s2 = vec3_or_zero(deck, "gravity_m_s2");
@@ -62,11 +69,11 @@ RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& prog
   setup.dynamic = deck.string("simulation.analysis") == "dynamic";
   setup.t_final_s = deck.number("simulation.t_max_s");
   setup.dt_s = deck.number("simulation.dt_s");
-  setup.spectral_radius = b.number("spectral_radius");
+  setup.spectral_radius = beam.spectral_radius;
 
   SingleBeamRun how;
-  how.segments = request.beam_segments.value_or(static_cast<int>(b.integer("segments")));
-  how.integrator = request.beam_integrator.value_or(b.string("integrator"));
+  how.segments = request.beam_segments.value_or(beam.segments);
+  how.integrator = request.beam_integrator.value_or(beam.integrator);
   how.matrix_max_age = request.beam_matrix_max_age.value_or(how.matrix_max_age);
   how.skip_unknown_channels = false;
   how.scene = "beam";

@@ -20,47 +20,91 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
+// The `blades:` keys: the beam's (decks/beam_deck.hpp), then the coupling, the start, the
+// outputs, the step-matrix reuse and the pitch actuator.
+struct BladesKeys : BeamKeys {
+  FlexibleRotor::Start start = FlexibleRotor::Start::static_loads;
+  CouplingMode coupling = CouplingMode::multi_rate;
+  int substeps = 4;
+  double stiffness_scale = 1.0;
+  std::vector<double> gauges_eta;
+  bool nodal_deflections = false;
+  bool induction_every_small_step = false;
+  int step_matrix_max_age = 40;
+  double step_matrix_max_rotation_rad = 0.02;
+  double pitch_actuator_frequency_hz = 2.0;
+  double pitch_actuator_damping_ratio = 0.7;
+};
+
+// Each key once: name, schema and the field it fills (decks/deck_section.hpp).
+const DeckSection<BladesKeys>& blades_section() {
+  static const DeckSection<BladesKeys> section = [] {
+    DeckSection<BladesKeys> b;
+    // Three blades at every small step: 1000 volumes (6 cm on the 5MW blade) still run at 2.8×
+    // real time (seed validation deck); more is a typo, not a model (100,000 ran for minutes).
+    b.keys_of(beam_section(23, 1000))
+        .key("start", Schema::choice({"static", "centrifugal", "undeformed"}).default_value("static")
+                          .doc("static: each blade starts from its static solution under the initial frame motion, "
+                               "gravity and aero loads; centrifugal: under the frame motion alone (BeamDyn's "
+                               "QuasiStaticInit, as OpenFAST's BeamDyn decks start); undeformed: the unloaded shape"),
+             &BladesKeys::start,
+             [](const std::string& how) {
+               return how == "static"        ? FlexibleRotor::Start::static_loads
+                      : how == "centrifugal" ? FlexibleRotor::Start::centrifugal
+                                             : FlexibleRotor::Start::undeformed;
+             })
+        .key("coupling", Schema::choice({"multi_rate", "predictor_corrector", "single_rate"})
+                             .default_value("multi_rate").doc("exchange between the multibody (ΔT) and the blades (Δt)"),
+             &BladesKeys::coupling, parse_coupling_mode)
+        .key("substeps", Schema::integer().at_least(1).at_most(10000).default_value(4)
+                             .doc("n = ΔT/Δt: blade steps per large step (single_rate needs 1)"),
+             &BladesKeys::substeps)
+        .key("stiffness_scale", Schema::number().greater_than(0.0).default_value(1.0)
+                                    .doc("factor on every sectional stiffness (1000: the stiff-blade check)"),
+             &BladesKeys::stiffness_scale)
+        .key("gauges_eta", Schema::sequence(Schema::number().at_least(0.0).at_most(1.0)).max_items(9).optional()
+                               .doc("span gauges: arclength fractions for Spn<k>FL/ML{x,y,z}b<b> (internal loads, blade frame)"),
+             &BladesKeys::gauges_eta)
+        .key("nodal_deflections", Schema::boolean().default_value(false)
+                                      .doc("write every node's deflection B<b>N<nnn>_TD{x,y,z}r (BeamDyn's nodal names, root "
+                                           "frame r, from the undeformed node): the input of proper orthogonal modes (fowtsim post --pom)"),
+             &BladesKeys::nodal_deflections)
+        .key("induction", Schema::choice({"large_step", "small_step"}).default_value("large_step")
+                              .doc("BEM inductions solved once per large step and held over its small steps "
+                                   "(loads follow the blade motion at every small step), or solved at every small step"),
+             &BladesKeys::induction_every_small_step, [](const std::string& v) { return v == "small_step"; })
+        // Reuse of each blade's factored generalized-α step matrix (beam::DynamicOptions: a modified-
+        // Newton step, second order in the step). Measured on the default deck, 60 s: rebuilding after
+        // 40 steps or 0.02 rad changes root moments, tip deflections, rotor speed and platform pitch by
+        // ≤ 2e-5 of their standard deviation against rebuilding at every step, over 200× less than
+        // halving Δt changes them (flexible_turbine_tests.cpp checks the same in steady wind). The beam
+        // module's tighter defaults (20 steps, 0.002 rad) are set on the seeds' large-deflection
+        // benchmarks and cost 30 % more run time here; a rebuild at every step costs 2×.
+        .key("step_matrix_max_age", Schema::integer().at_least(1).default_value(40)
+                                        .doc("blade steps before the factored step matrix is rebuilt (1: every step, the seed's scheme)"),
+             &BladesKeys::step_matrix_max_age)
+        .key("step_matrix_max_rotation_rad", Schema::number().greater_than(0.0).default_value(0.02)
+                                                 .doc("or once the sum of the largest nodal rotation per step exceeds this"),
+             &BladesKeys::step_matrix_max_rotation_rad)
+        .key("pitch_actuator_frequency_hz", Schema::number().greater_than(0.0).default_value(2.0)
+                                                .doc("natural frequency of the second-order pitch actuator"),
+             &BladesKeys::pitch_actuator_frequency_hz)
+        .key("pitch_actuator_damping_ratio", Schema::number().greater_than(0.0).default_value(0.7).doc("its damping ratio"),
+             &BladesKeys::pitch_actuator_damping_ratio);
+    return b;
+  }();
+  return section;
+}
+
+BladesKeys blades_keys(const io::ValidatedDeck& deck) {
+  BladesKeys keys;
+  blades_section().read_into(deck.section("blades"), keys);
+  return keys;
+}
+
 }  // namespace
 
-Schema blades_schema() {
-  // Three blades at every small step: 1000 volumes (6 cm on the 5MW blade) still run at 2.8×
-  // real time (seed validation deck); more is a typo, not a model (100,000 ran for minutes).
-  std::vector<io::SchemaField> fields = beam_schema_fields(23, 1000);
-  fields.push_back({"start", Schema::choice({"static", "centrifugal", "undeformed"}).default_value("static")
-                                 .doc("static: each blade starts from its static solution under the initial frame motion, "
-                                      "gravity and aero loads; centrifugal: under the frame motion alone (BeamDyn's "
-                                      "QuasiStaticInit, as OpenFAST's BeamDyn decks start); undeformed: the unloaded shape")});
-  fields.push_back({"coupling", Schema::choice({"multi_rate", "predictor_corrector", "single_rate"})
-                                    .default_value("multi_rate").doc("exchange between the multibody (ΔT) and the blades (Δt)")});
-  fields.push_back({"substeps", Schema::integer().at_least(1).at_most(10000).default_value(4)
-                                    .doc("n = ΔT/Δt: blade steps per large step (single_rate needs 1)")});
-  fields.push_back({"stiffness_scale", Schema::number().greater_than(0.0).default_value(1.0)
-                                           .doc("factor on every sectional stiffness (1000: the stiff-blade check)")});
-  fields.push_back({"gauges_eta", Schema::sequence(Schema::number().at_least(0.0).at_most(1.0)).max_items(9).optional()
-                                      .doc("span gauges: arclength fractions for Spn<k>FL/ML{x,y,z}b<b> (internal loads, blade frame)")});
-  fields.push_back({"nodal_deflections", Schema::boolean().default_value(false)
-                                             .doc("write every node's deflection B<b>N<nnn>_TD{x,y,z}r (BeamDyn's nodal names, root "
-                                                  "frame r, from the undeformed node): the input of proper orthogonal modes (fowtsim post --pom)")});
-  fields.push_back({"induction", Schema::choice({"large_step", "small_step"}).default_value("large_step")
-                                     .doc("BEM inductions solved once per large step and held over its small steps "
-                                          "(loads follow the blade motion at every small step), or solved at every small step")});
-  // Reuse of each blade's factored generalized-α step matrix (beam::DynamicOptions: a modified-
-  // Newton step, second order in the step). Measured on the default deck, 60 s: rebuilding after
-  // 40 steps or 0.02 rad changes root moments, tip deflections, rotor speed and platform pitch by
-  // ≤ 2e-5 of their standard deviation against rebuilding at every step, over 200× less than
-  // halving Δt changes them (flexible_turbine_tests.cpp checks the same in steady wind). The beam
-  // module's tighter defaults (20 steps, 0.002 rad) are set on the seeds' large-deflection
-  // benchmarks and cost 30 % more run time here; a rebuild at every step costs 2×.
-  fields.push_back({"step_matrix_max_age", Schema::integer().at_least(1).default_value(40)
-                                               .doc("blade steps before the factored step matrix is rebuilt (1: every step, the seed's scheme)")});
-  fields.push_back({"step_matrix_max_rotation_rad", Schema::number().greater_than(0.0).default_value(0.02)
-                                                        .doc("or once the sum of the largest nodal rotation per step exceeds this")});
-  fields.push_back({"pitch_actuator_frequency_hz", Schema::number().greater_than(0.0).default_value(2.0)
-                                                       .doc("natural frequency of the second-order pitch actuator")});
-  fields.push_back({"pitch_actuator_damping_ratio", Schema::number().greater_than(0.0).default_value(0.7)
-                                                        .doc("its damping ratio")});
-  return Schema::map(std::move(fields));
-}
+Schema blades_schema() { return blades_section().schema(); }
 
 void TurbineBlades::configure(multibody::Params& p) {
   p.rotor.flexible_blades = true;
@@ -70,15 +114,15 @@ void TurbineBlades::configure(multibody::Params& p) {
 namespace {
 
 FlexibleRotorParams rotor_params(const io::ValidatedDeck& deck, const multibody::Model& model) {
-  const io::ValidatedDeck b = deck.section("blades");
+  const BladesKeys keys = blades_keys(deck);
   FlexibleRotorParams p;
-  beam::BeamDefinition definition = beam_definition(deck, "blades");
-  for (beam::Station& station : definition.stations) station.stiffness *= b.number("stiffness_scale");
-  p.blade = located(b, [&] { return beam::discretise(definition, static_cast<int>(b.integer("segments"))); });
-  p.dynamics.integrator = beam::integrator_from_name(b.string("integrator"));
-  p.dynamics.spectral_radius = b.number("spectral_radius");
-  p.dynamics.matrix_max_age = static_cast<int>(b.integer("step_matrix_max_age"));
-  p.dynamics.matrix_max_rotation_rad = b.number("step_matrix_max_rotation_rad");
+  beam::BeamDefinition definition = beam_definition(deck, "blades", keys);
+  for (beam::Station& station : definition.stations) station.stiffness *= keys.stiffness_scale;
+  p.blade = located(deck.section("blades"), [&] { return beam::discretise(definition, keys.segments); });
+  p.dynamics.integrator = beam::integrator_from_name(keys.integrator);
+  p.dynamics.spectral_radius = keys.spectral_radius;
+  p.dynamics.matrix_max_age = keys.step_matrix_max_age;
+  p.dynamics.matrix_max_rotation_rad = keys.step_matrix_max_rotation_rad;
   const multibody::Params& s = model.params;
   p.hub_inertia_kg_m2 = s.rotor.hub_inertia_kg_m2;
   p.generator_inertia_kg_m2 = s.drivetrain.generator_inertia_kg_m2;
@@ -92,9 +136,9 @@ FlexibleRotorParams rotor_params(const io::ValidatedDeck& deck, const multibody:
     p.root_h[i] = model.blade_root_h[i];
   }
   p.gravity_m_s2 = s.gravity_m_s2;
-  p.pitch_natural_frequency_rad_s = 2.0 * std::numbers::pi * b.number("pitch_actuator_frequency_hz");
-  p.pitch_damping_ratio = b.number("pitch_actuator_damping_ratio");
-  p.induction_every_small_step = b.string("induction") == "small_step";
+  p.pitch_natural_frequency_rad_s = 2.0 * std::numbers::pi * keys.pitch_actuator_frequency_hz;
+  p.pitch_damping_ratio = keys.pitch_actuator_damping_ratio;
+  p.induction_every_small_step = keys.induction_every_small_step;
   if (model.blade_count != kBlades)
     throw InputError({"floating", std::nullopt, "structure.rotor.blade_count", "3"},
                      where(deck, "structure.rotor.blade_count") + ": flexible blades need a three-bladed rotor");
@@ -116,18 +160,15 @@ TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Mod
                                               -model.params.rotor.precone_deg / kRadToDeg, model.params.rotor.hub_radius_m)
                 : std::nullopt),
       rotor_(params_, aero, map_ ? &*map_ : nullptr) {
-  const io::ValidatedDeck b = deck.section("blades");
-  mode_ = parse_coupling_mode(b.string("coupling"));
-  substeps_ = static_cast<int>(b.integer("substeps"));
+  const BladesKeys keys = blades_keys(deck);
+  mode_ = keys.coupling;
+  substeps_ = keys.substeps;
   if (mode_ == CouplingMode::single_rate && substeps_ != 1)
     throw InputError({"floating", std::nullopt, "blades.substeps", "1 with single_rate"},
                      where(deck, "blades.substeps") + ": single_rate coupling takes one blade step per large step");
-  if (b.has("gauges_eta")) gauges_eta_ = b.numbers("gauges_eta");
-  nodal_deflections_ = b.boolean("nodal_deflections");
-  const std::string how = b.string("start");
-  start_ = how == "static" ? FlexibleRotor::Start::static_loads
-           : how == "centrifugal" ? FlexibleRotor::Start::centrifugal
-                                  : FlexibleRotor::Start::undeformed;
+  gauges_eta_ = keys.gauges_eta;
+  nodal_deflections_ = keys.nodal_deflections;
+  start_ = keys.start;
 }
 
 void TurbineBlades::start(const ShaftMotion& shaft, const multibody::State& state, double pitch_rad,
