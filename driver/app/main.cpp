@@ -27,7 +27,7 @@
 #include "scenes/beam_scene.hpp"
 #include "scenes/floating_scene.hpp"
 #include "scenes/platform_scene.hpp"
-#include "scenes/scene_schema.hpp"
+#include "scenes/toy_scene.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -249,7 +249,7 @@ int main(int argc, char** argv) {
                "Floating-turbine scene (a deck with a top-level `structure`):\n{}\n"
                "Turbulence deck (`fowtsim turbulence DECK`):\n{}\nFatigue configuration (`fowtsim post --del-config FILE`):\n{}\n"
                "Lifetime specification (`fowtsim post --lifetime FILE`):\n{}",
-               io::describe_schema(scene_schema()), io::describe_schema(beam_scene_schema()),
+               io::describe_schema(toy_scene_schema()), io::describe_schema(beam_scene_schema()),
                io::describe_schema(platform_scene_schema()), io::describe_schema(floating_scene_schema()),
                io::describe_schema(io::Schema::map({{"wind", wind_schema()}})), io::describe_schema(fatigue_config_schema()),
                io::describe_schema(lifetime_spec_schema()));

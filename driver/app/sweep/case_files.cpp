@@ -12,7 +12,7 @@
 #include "scenes/beam_scene.hpp"
 #include "scenes/floating_scene.hpp"
 #include "scenes/platform_scene.hpp"
-#include "scenes/scene_schema.hpp"
+#include "scenes/toy_scene.hpp"
 
 namespace fowtsim::driver::sweep {
 
@@ -72,7 +72,7 @@ io::Schema schema_of_scene(const io::DeckNode& root) {
   if (root.find("structure")) return floating_scene_schema();
   if (root.find("platform_motion")) return platform_scene_schema();
   if (root.find("beam")) return beam_scene_schema();
-  return scene_schema();
+  return toy_scene_schema();
 }
 
 // A problem in a key the case deck sets is reported where the spec sets it (if it does), naming the case.

@@ -17,7 +17,6 @@
 #include "scenes/beam_scene.hpp"
 #include "scenes/floating_scene.hpp"
 #include "scenes/platform_scene.hpp"
-#include "scenes/scene_schema.hpp"
 #include "scenes/toy_scene.hpp"
 
 namespace fowtsim::driver {
@@ -122,7 +121,7 @@ RunReport run_picked_scene(const RunRequest& request, const ProgressCallback& pr
   if (scene == "beam") return run_beam_scene(request, progress);
   if (scene == "platform_motion") return run_platform_scene(request, progress);
   if (scene == "structure") return run_floating_scene(request, progress);
-  const io::ValidatedDeck deck = io::read_deck(scene_schema(), request.deck_path);
+  const io::ValidatedDeck deck = io::read_deck(toy_scene_schema(), request.deck_path);
   return run_toy_scene(deck, request, progress);
 }
 

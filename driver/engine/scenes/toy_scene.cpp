@@ -8,6 +8,7 @@
 
 #include "coupling/multi_rate_scheduler.hpp"
 #include "decks/deck_helpers.hpp"
+#include "decks/deck_section.hpp"
 #include "fowtsim/core/channels.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/toy/exact_solution.hpp"
@@ -19,16 +20,38 @@ namespace {
 
 using Scheduler = MultiRateScheduler<toy::SlowOscillator, toy::FastOscillator>;
 
-template <class Params>
-Params read_oscillator(const io::ValidatedDeck& d) {
-  Params p;
-  p.mass_kg = d.number("mass_kg");
-  p.stiffness_N_m = d.number("stiffness_N_m");
-  p.damping_N_s_m = d.number("damping_N_s_m");
-  p.initial_position_m = d.number("initial_position_m");
-  p.divergence_limit_m = d.number("divergence_limit_m");
-  return p;
+using io::Schema;
+
+Schema toy_simulation_schema() {
+  return Schema::map({
+      {"t_max_s", Schema::number().unit("s").greater_than(0.0).doc("simulated time")},
+      {"dt_coupling_s", Schema::number().unit("s").greater_than(0.0).doc("large (coupling) step ΔT")},
+      {"substeps", Schema::integer().at_least(1).at_most(100000).default_value(10)
+                       .doc("small steps per large step: Δt = ΔT / substeps")},
+      {"coupling", Schema::choice({"multi_rate", "predictor_corrector", "single_rate"})
+                       .default_value("multi_rate").doc("how slow and fast subsystems exchange state")},
+      {"seed", Schema::integer().at_least(0).default_value(0).doc("random seed (recorded in the output)")},
+  });
 }
+
+// An oscillator's keys, each once with the Params field it fills (decks/deck_section.hpp); the
+// slow and the fast oscillator have the same fields in two types.
+template <class Params>
+DeckSection<Params> oscillator_section(const char* what) {
+  DeckSection<Params> s;
+  s.key("mass_kg", Schema::number().unit("kg").greater_than(0.0).doc(std::string(what) + " mass"), &Params::mass_kg)
+      .key("stiffness_N_m", Schema::number().unit("N_m").greater_than(0.0).doc("spring stiffness"), &Params::stiffness_N_m)
+      .key("damping_N_s_m", Schema::number().unit("N_s_m").at_least(0.0).default_value(0.0).doc("dashpot"), &Params::damping_N_s_m)
+      .key("initial_position_m", Schema::number().unit("m").default_value(0.0).doc("initial displacement"),
+           &Params::initial_position_m)
+      .key("divergence_limit_m", Schema::number().unit("m").greater_than(0.0).default_value(1e3)
+                                     .doc("|displacement| above this stops the run as divergent"),
+           &Params::divergence_limit_m);
+  return s;
+}
+const char* const kSlow = "slow (heavy) oscillator";
+const char* const kFast = "fast (light, stiff) oscillator, relative to the slow one";
+
 
 CouplingSettings read_settings(const io::ValidatedDeck& deck, const RunRequest& request) {
   CouplingSettings s;
@@ -73,10 +96,23 @@ std::array<double, kChannelCount> values_of(const Scheduler& s, const toy::Exact
 
 }  // namespace
 
+Schema toy_scene_schema() {
+  return Schema::map({
+      {"simulation", toy_simulation_schema().doc("time stepping and coupling")},
+      {"output", output_schema().optional().doc("what to write; absent = HDF5, all channels")},
+      {"toy_oscillators", Schema::map({
+                              {"slow", oscillator_section<toy::SlowOscillator::Params>(kSlow).schema()},
+                              {"fast", oscillator_section<toy::FastOscillator::Params>(kFast).schema()},
+                          }).doc("verification scene: coupled oscillators with an exact solution")},
+  });
+}
+
 RunReport run_toy_scene(const io::ValidatedDeck& deck, const RunRequest& request, const ProgressCallback& progress) {
   const CouplingSettings settings = read_settings(deck, request);
-  const auto slow = read_oscillator<toy::SlowOscillator::Params>(deck.section("toy_oscillators.slow"));
-  const auto fast = read_oscillator<toy::FastOscillator::Params>(deck.section("toy_oscillators.fast"));
+  toy::SlowOscillator::Params slow;
+  toy::FastOscillator::Params fast;
+  oscillator_section<toy::SlowOscillator::Params>(kSlow).read_into(deck.section("toy_oscillators.slow"), slow);
+  oscillator_section<toy::FastOscillator::Params>(kFast).read_into(deck.section("toy_oscillators.fast"), fast);
   const std::vector<ChannelInfo> all = all_channels(slow, fast);
   const std::vector<std::size_t> picked = select_channels(deck, all, "toy");
 

@@ -1,10 +1,12 @@
 #pragma once
-// The verification scene: toy coupled oscillators through the multi-rate glue code, written
-// with the exact solution alongside (default deck until the turbine modules land).
+// The verification scene: toy coupled oscillators through the multi-rate exchange, written with
+// the exact solution alongside.
 #include "fowtsim/io/schema.hpp"
 #include "run/run_types.hpp"
 
 namespace fowtsim::driver {
+
+io::Schema toy_scene_schema();  // simulation, output, toy_oscillators
 
 // Runs the scene described by a validated scene deck. Input errors throw InputError before the
 // first step; numerical trouble throws NumericalError after the outputs are closed with every
