@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "decks/deck_helpers.hpp"
+#include "scenes/scene_runner.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/suggest.hpp"
 
@@ -13,11 +14,12 @@ std::vector<std::size_t> select_channels(const io::ValidatedDeck& deck, const st
   ChannelRegistry registry;
   for (const ChannelInfo& c : all) registry.add(c);
   std::vector<std::size_t> picked;
-  if (!deck.has("output.channels")) {
+  const std::optional<std::vector<std::string>> listed = output_keys(deck).channels;
+  if (!listed) {
     for (std::size_t i = 0; i < all.size(); ++i) picked.push_back(i);
     return picked;
   }
-  const std::vector<std::string> names = deck.strings("output.channels");
+  const std::vector<std::string>& names = *listed;
   std::vector<std::string> known;
   std::string known_text;
   for (const ChannelInfo& c : all) {

@@ -78,18 +78,17 @@ RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& prog
   how.skip_unknown_channels = false;
   how.scene = "beam";
   how.deck_hash = deck.hash();
-  if (deck.has("output")) {
-    how.decimation = deck.integer("output.decimation");
-    if (deck.has("output.channels")) {
-      how.channels = deck.strings("output.channels");
-      for (std::size_t i = 0; i < how.channels.size(); ++i)
-        if (!find_beamdyn_channel(how.channels[i]))
-          throw InputError({"beam", std::nullopt, how.channels[i], ""},
-                           where(deck, fmt::format("output.channels[{}]", i)) + ": unknown beam channel '" + how.channels[i] + "'");
-    }
+  const OutputKeys output = output_keys(deck);
+  how.decimation = output.decimation;
+  if (output.channels) {
+    how.channels = *output.channels;
+    for (std::size_t i = 0; i < how.channels.size(); ++i)
+      if (!find_beamdyn_channel(how.channels[i]))
+        throw InputError({"beam", std::nullopt, how.channels[i], ""},
+                         where(deck, fmt::format("output.channels[{}]", i)) + ": unknown beam channel '" + how.channels[i] + "'");
   }
   RunRequest r = request;
-  if (!r.output_format) r.output_format = deck.has("output") ? deck.string("output.format") : "h5";
+  if (!r.output_format) r.output_format = output.format;
   if (!r.output_base) r.output_base = std::filesystem::path("runs") / request.deck_path.stem();
   return run_single_beam(setup, how, r, progress);
 }

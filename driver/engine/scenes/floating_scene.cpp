@@ -110,7 +110,7 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck) : structure_(structu
     throw InputError({"floating", std::nullopt, "structure.rotor.flexible_blades", "a blades section"},
                      where(deck, "structure.rotor.flexible_blades") + ": flexible blades need the `blades` section (their structure)");
   const multibody::State initial = multibody::Multibody::make_state(model_);
-  sea_.emplace(deck, platform_motion(initial), deck.number("simulation.dt_s"));
+  sea_.emplace(deck, platform_motion(initial), simulation_keys(deck).dt_s);
   if (deck.has("aero")) {
     rotor_.emplace(aero_params(deck), wind_params(deck.section("wind")), structure_);
     // One rotor, two descriptions: the aero blade table and the structure must agree on it.

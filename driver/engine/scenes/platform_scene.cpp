@@ -110,7 +110,7 @@ RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& 
   const io::ValidatedDeck deck = io::read_deck(platform_scene_schema(), request.deck_path);
   const Trajectory trajectory = read_trajectory(deck.section("platform_motion"));
   // Wave kinematics at the strip nodes of the mean pose.
-  SeaModules sea(deck, platform_motion(trajectory.mean, Vec6::Zero()), deck.number("simulation.dt_s"));
+  SeaModules sea(deck, platform_motion(trajectory.mean, Vec6::Zero()), simulation_keys(deck).dt_s);
 
   std::vector<ChannelInfo> all = platform_channels();
   for (const ChannelInfo& c : sea.channels()) all.push_back(c);

@@ -9,6 +9,7 @@
 
 #include "fowtsim/core/error.hpp"
 #include "decks/deck_helpers.hpp"
+#include "decks/deck_section.hpp"
 #include "fowtsim/core/version.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_set.hpp"
@@ -17,25 +18,52 @@ namespace fowtsim::driver {
 
 using io::Schema;
 
-Schema simulation_schema(const char* step_doc) {
-  return Schema::map({
-      {"t_max_s", Schema::number().unit("s").greater_than(0.0).default_value(600.0).doc("simulated time")},
-      {"dt_s", Schema::number().unit("s").greater_than(0.0).default_value(0.05).doc(step_doc)},
-  });
+namespace {
+
+// Each key once: name, schema and the field it fills (decks/deck_section.hpp).
+DeckSection<SimulationKeys> simulation_section(const char* step_doc) {
+  DeckSection<SimulationKeys> s;
+  s.key("t_max_s", Schema::number().unit("s").greater_than(0.0).default_value(600.0).doc("simulated time"), &SimulationKeys::t_max_s)
+      .key("dt_s", Schema::number().unit("s").greater_than(0.0).default_value(0.05).doc(step_doc), &SimulationKeys::dt_s);
+  return s;
 }
 
-Schema output_schema() {
-  return Schema::map({
-      {"format", Schema::choice({"h5", "out", "both"}).default_value("h5").doc("HDF5, OpenFAST text .out, or both")},
-      {"decimation", Schema::integer().at_least(1).default_value(1).doc("write every k-th step (the large step where there are two)")},
-      {"channels", Schema::sequence(Schema::string()).optional().doc("channel names; absent = all")},
-  });
+const DeckSection<OutputKeys>& output_section() {
+  static const DeckSection<OutputKeys> section = [] {
+    DeckSection<OutputKeys> s;
+    s.key("format", Schema::choice({"h5", "out", "both"}).default_value("h5").doc("HDF5, OpenFAST text .out, or both"),
+          &OutputKeys::format)
+        .key("decimation", Schema::integer().at_least(1).default_value(1).doc("write every k-th step (the large step where there are two)"),
+             &OutputKeys::decimation)
+        .key("channels", Schema::sequence(Schema::string()).optional().doc("channel names; absent = all"), &OutputKeys::channels);
+    return s;
+  }();
+  return section;
+}
+
+}  // namespace
+
+Schema simulation_schema(const char* step_doc) { return simulation_section(step_doc).schema(); }
+
+SimulationKeys simulation_keys(const io::ValidatedDeck& deck) {
+  SimulationKeys keys;
+  simulation_section("").read_into(deck.section("simulation"), keys);
+  return keys;
+}
+
+Schema output_schema() { return output_section().schema(); }
+
+OutputKeys output_keys(const io::ValidatedDeck& deck) {
+  OutputKeys keys;
+  if (deck.has("output")) output_section().read_into(deck.section("output"), keys);
+  return keys;
 }
 
 FixedStepPlan output_plan(const RunRequest& request, const io::ValidatedDeck& deck) {
+  const OutputKeys keys = output_keys(deck);
   FixedStepPlan plan;
-  plan.format = request.output_format.value_or(deck.has("output") ? deck.string("output.format") : "h5");
-  plan.decimation = deck.has("output") ? deck.integer("output.decimation") : 1;
+  plan.format = request.output_format.value_or(keys.format);
+  plan.decimation = keys.decimation;
   plan.base = request.output_base.value_or(std::filesystem::path("runs") / request.deck_path.stem());
   plan.deck_hash = deck.hash();
   return plan;
@@ -44,8 +72,9 @@ FixedStepPlan output_plan(const RunRequest& request, const io::ValidatedDeck& de
 RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& deck, FixedStepScene scene,
                           const ProgressCallback& progress) {
   FixedStepPlan plan = output_plan(request, deck);
-  plan.t_max_s = request.t_max_s.value_or(deck.number("simulation.t_max_s"));
-  plan.dt_s = deck.number("simulation.dt_s");
+  const SimulationKeys simulation = simulation_keys(deck);
+  plan.t_max_s = request.t_max_s.value_or(simulation.t_max_s);
+  plan.dt_s = simulation.dt_s;
   const double t_max = plan.t_max_s, dt = plan.dt_s;
   if (request.dt_s)
     throw InputError({"scene", std::nullopt, "--dt", "simulation.dt_s in the deck"},

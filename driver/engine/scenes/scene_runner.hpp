@@ -5,6 +5,7 @@
 // so far when a step fails.
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -17,8 +18,22 @@
 
 namespace fowtsim::driver {
 
-io::Schema simulation_schema(const char* step_doc);  // t_max_s, dt_s
-io::Schema output_schema();                          // format, decimation, channels
+// The `simulation` section of the fixed-step scenes (the floating and platform scenes).
+struct SimulationKeys {
+  double t_max_s = 600.0;  // simulated time [s]
+  double dt_s = 0.05;      // the scene's step (the large step where there are two) [s]
+};
+io::Schema simulation_schema(const char* step_doc);
+SimulationKeys simulation_keys(const io::ValidatedDeck& deck);  // of the deck's `simulation` section
+
+// The `output` section of every scene (optional: absent = HDF5, every row, every channel).
+struct OutputKeys {
+  std::string format = "h5";                              // h5 | out | both
+  int decimation = 1;                                     // write every k-th step
+  std::optional<std::vector<std::string>> channels;      // absent = all
+};
+io::Schema output_schema();
+OutputKeys output_keys(const io::ValidatedDeck& deck);  // of the deck's `output` section, or the defaults
 
 struct FixedStepScene {
   std::vector<ChannelInfo> written;                   // channels in file order
