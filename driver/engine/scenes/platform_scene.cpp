@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "decks/deck_helpers.hpp"
+#include "decks/deck_section.hpp"
 #include "decks/hydro_deck.hpp"
 #include "decks/mooring_deck.hpp"
 #include "decks/waves_deck.hpp"
@@ -20,18 +21,33 @@ using io::Schema;
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
 const char* const kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
 
-Schema motion_schema() {
-  const Schema harmonic = Schema::map({
-      {"dof", Schema::choice({"surge", "sway", "heave", "roll", "pitch", "yaw"}).doc("platform DOF")},
-      {"amplitude", Schema::number().doc("amplitude [m for surge, sway, heave; deg for roll, pitch, yaw]")},
-      {"period_s", Schema::number().greater_than(0.0).doc("period")},
-      {"phase_deg", Schema::number().default_value(0.0).doc("phase: amplitude · sin(2π t/T + phase)")},
-  });
-  return Schema::map({
-      {"offset_m", number_vector(3, "constant surge, sway, heave of the reference point").optional()},
-      {"euler_123_deg", number_vector(3, "constant roll, pitch, yaw (Euler 1-2-3)").optional()},
-      {"harmonic", Schema::sequence(harmonic).optional().doc("harmonic motions added to the offsets")},
-  });
+// The platform_motion keys as written, each once with the field it fills (decks/deck_section.hpp);
+// read_trajectory turns them into a Trajectory (an amplitude's unit depends on its DOF).
+struct HarmonicKeys {
+  std::string dof;
+  double amplitude = 0.0, period_s = 1.0, phase_deg = 0.0;
+};
+struct MotionKeys {
+  Vec3 offset_m = Vec3::Zero();
+  Vec3 euler_123_deg = Vec3::Zero();
+  std::optional<std::vector<HarmonicKeys>> harmonic;
+};
+
+const DeckSection<MotionKeys>& motion_section() {
+  static const DeckSection<MotionKeys> section = [] {
+    DeckSection<HarmonicKeys> harmonic;
+    harmonic.key("dof", Schema::choice({"surge", "sway", "heave", "roll", "pitch", "yaw"}).doc("platform DOF"), &HarmonicKeys::dof)
+        .key("amplitude", Schema::number().doc("amplitude [m for surge, sway, heave; deg for roll, pitch, yaw]"),
+             &HarmonicKeys::amplitude)
+        .key("period_s", Schema::number().greater_than(0.0).doc("period"), &HarmonicKeys::period_s)
+        .key("phase_deg", Schema::number().default_value(0.0).doc("phase: amplitude · sin(2π t/T + phase)"), &HarmonicKeys::phase_deg);
+    DeckSection<MotionKeys> m;
+    m.key("offset_m", number_vector(3, "constant surge, sway, heave of the reference point").optional(), &MotionKeys::offset_m)
+        .key("euler_123_deg", number_vector(3, "constant roll, pitch, yaw (Euler 1-2-3)").optional(), &MotionKeys::euler_123_deg)
+        .list("harmonic", harmonic, &MotionKeys::harmonic, 0, "harmonic motions added to the offsets");
+    return m;
+  }();
+  return section;
 }
 
 // Prescribed platform DOFs q(t) = q0 + Σ a sin(ω t + φ) and their rates [m, rad].
@@ -54,19 +70,16 @@ struct Trajectory {
 };
 
 Trajectory read_trajectory(const io::ValidatedDeck& d) {
+  MotionKeys keys;
+  motion_section().read_into(d, keys);
   Trajectory tr;
-  if (d.has("offset_m")) tr.mean.head<3>() = vec3(d, "offset_m");
-  if (d.has("euler_123_deg")) tr.mean.tail<3>() = kDegree * vec3(d, "euler_123_deg");
-  if (d.has("harmonic")) {
-    for (std::size_t i = 0; i < d.size("harmonic"); ++i) {
-      const io::ValidatedDeck h = d.section(fmt::format("harmonic[{}]", i));
-      const std::string dof = h.string("dof");
-      int k = 0;
-      while (dof != kDofNames[k]) ++k;
-      const double unit = k < 3 ? 1.0 : kDegree;
-      tr.harmonics.push_back({k, unit * h.number("amplitude"), 2.0 * 3.14159265358979323846 / h.number("period_s"),
-                              kDegree * h.number("phase_deg")});
-    }
+  tr.mean.head<3>() = keys.offset_m;
+  tr.mean.tail<3>() = kDegree * keys.euler_123_deg;
+  for (const HarmonicKeys& h : keys.harmonic.value_or(std::vector<HarmonicKeys>{})) {
+    int k = 0;
+    while (h.dof != kDofNames[k]) ++k;
+    const double unit = k < 3 ? 1.0 : kDegree;
+    tr.harmonics.push_back({k, unit * h.amplitude, 2.0 * 3.14159265358979323846 / h.period_s, kDegree * h.phase_deg});
   }
   return tr;
 }
@@ -97,7 +110,7 @@ Schema platform_scene_schema() {
   return Schema::map({
       {"simulation", simulation_schema("time step").doc("time span and step")},
       {"output", output_schema().optional().doc("what to write")},
-      {"platform_motion", motion_schema().doc("prescribed platform motion (reference point at SWL)")},
+      {"platform_motion", motion_section().schema().doc("prescribed platform motion (reference point at SWL)")},
       {"report_mooring_stiffness", Schema::boolean().default_value(false)
                                        .doc("write the linearised 6×6 mooring stiffness at the mean pose to the summary and metadata")},
       {"waves", waves_schema().optional().doc("incident sea; absent = still water")},
