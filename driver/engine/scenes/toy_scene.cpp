@@ -22,16 +22,36 @@ using Scheduler = MultiRateScheduler<toy::SlowOscillator, toy::FastOscillator>;
 
 using io::Schema;
 
-Schema toy_simulation_schema() {
-  return Schema::map({
-      {"t_max_s", Schema::number().unit("s").greater_than(0.0).doc("simulated time")},
-      {"dt_coupling_s", Schema::number().unit("s").greater_than(0.0).doc("large (coupling) step ΔT")},
-      {"substeps", Schema::integer().at_least(1).at_most(100000).default_value(10)
-                       .doc("small steps per large step: Δt = ΔT / substeps")},
-      {"coupling", Schema::choice({"multi_rate", "predictor_corrector", "single_rate"})
-                       .default_value("multi_rate").doc("how slow and fast subsystems exchange state")},
-      {"seed", Schema::integer().at_least(0).default_value(0).doc("random seed (recorded in the output)")},
-  });
+// The toy's `simulation` keys, each once with the field it fills (decks/deck_section.hpp): the
+// coupling settings and the seed recorded in the output.
+struct ToySimulation {
+  CouplingSettings settings;
+  std::uint64_t seed = 0;
+};
+
+const DeckSection<ToySimulation>& toy_simulation_section() {
+  static const DeckSection<ToySimulation> section = [] {
+    DeckSection<ToySimulation> s;
+    s.key("t_max_s", Schema::number().unit("s").greater_than(0.0).doc("simulated time"),
+          [](ToySimulation& t) -> double& { return t.settings.t_max_s; })
+        .key("dt_coupling_s", Schema::number().unit("s").greater_than(0.0).doc("large (coupling) step ΔT"),
+             [](ToySimulation& t) -> double& { return t.settings.dt_coupling_s; })
+        .key("substeps", Schema::integer().at_least(1).at_most(100000).default_value(10)
+                             .doc("small steps per large step: Δt = ΔT / substeps"),
+             [](ToySimulation& t) -> int& { return t.settings.substeps; })
+        .key("coupling", Schema::choice({"multi_rate", "predictor_corrector", "single_rate"})
+                             .default_value("multi_rate").doc("how slow and fast subsystems exchange state"),
+             [](ToySimulation& t) -> CouplingMode& { return t.settings.mode; }, parse_coupling_mode)
+        .key("seed", Schema::integer().at_least(0).default_value(0).doc("random seed (recorded in the output)"), &ToySimulation::seed);
+    return s;
+  }();
+  return section;
+}
+
+ToySimulation toy_simulation(const io::ValidatedDeck& deck) {
+  ToySimulation t;
+  toy_simulation_section().read_into(deck.section("simulation"), t);
+  return t;
 }
 
 // An oscillator's keys, each once with the Params field it fills (decks/deck_section.hpp); the
@@ -52,16 +72,12 @@ DeckSection<Params> oscillator_section(const char* what) {
 const char* const kSlow = "slow (heavy) oscillator";
 const char* const kFast = "fast (light, stiff) oscillator, relative to the slow one";
 
-
 CouplingSettings read_settings(const io::ValidatedDeck& deck, const RunRequest& request) {
-  CouplingSettings s;
-  s.t_max_s = request.t_max_s.value_or(deck.number("simulation.t_max_s"));
+  CouplingSettings s = toy_simulation(deck).settings;
+  if (request.t_max_s) s.t_max_s = *request.t_max_s;
   if (request.dt_s)
     throw InputError({"toy", std::nullopt, "--dt", "simulation.dt_coupling_s in the deck"},
                      "--dt sets the time step of beam runs (BeamDyn driver inputs, beam decks); this scene's steps are set in the deck");
-  s.dt_coupling_s = deck.number("simulation.dt_coupling_s");
-  s.substeps = static_cast<int>(deck.integer("simulation.substeps"));
-  s.mode = parse_coupling_mode(deck.string("simulation.coupling"));
   try {
     validate(s);
   } catch (const InputError& e) {
@@ -98,7 +114,7 @@ std::array<double, kChannelCount> values_of(const Scheduler& s, const toy::Exact
 
 Schema toy_scene_schema() {
   return Schema::map({
-      {"simulation", toy_simulation_schema().doc("time stepping and coupling")},
+      {"simulation", toy_simulation_section().schema().doc("time stepping and coupling")},
       {"output", output_schema().optional().doc("what to write; absent = HDF5, all channels")},
       {"toy_oscillators", Schema::map({
                               {"slow", oscillator_section<toy::SlowOscillator::Params>(kSlow).schema()},
@@ -127,7 +143,7 @@ RunReport run_toy_scene(const io::ValidatedDeck& deck, const RunRequest& request
   for (std::size_t i : picked) scene.written.push_back(all[i]);
   scene.metadata.deck_path = request.deck_path.string();
   scene.metadata.deck_hash = deck.hash();
-  scene.metadata.seeds = {static_cast<std::uint64_t>(deck.integer("simulation.seed"))};
+  scene.metadata.seeds = {toy_simulation(deck).seed};
   scene.metadata.dt_s = settings.dt_s();
   scene.metadata.dt_coupling_s = settings.dt_coupling_s;
   scene.metadata.extra = {{"scene", "toy_oscillators"}, {"coupling", to_string(settings.mode)}};
