@@ -12,7 +12,8 @@ using wind::WindParams;
 
 namespace {
 
-// Each key once: name, schema and the Params field it fills (decks/deck_section.hpp).
+// Each key once: name, schema and the Params field it fills (decks/deck_section.hpp). A range is
+// the module's own (wind::validate), so a deck outside it stops at its line.
 const DeckSection<WindParams>& wind_section() {
   static const DeckSection<WindParams> section = [] {
     DeckSection<TurbulenceParams> t;
@@ -22,8 +23,8 @@ const DeckSection<WindParams>& wind_section() {
              &TurbulenceParams::model, wind::parse_turbulence_model)
         .key("iec_wind_class", Schema::integer().at_least(1).at_most(3).default_value(1).doc("IEC wind class I/II/III (ETM)"),
              &TurbulenceParams::iec_wind_class)
-        .key("ny", Schema::integer().at_least(2).default_value(31).doc("grid points across"), &TurbulenceParams::ny)
-        .key("nz", Schema::integer().at_least(2).default_value(31).doc("grid points vertically"), &TurbulenceParams::nz)
+        .key("ny", Schema::integer().at_least(2).at_most(1024).default_value(31).doc("grid points across"), &TurbulenceParams::ny)
+        .key("nz", Schema::integer().at_least(2).at_most(1024).default_value(31).doc("grid points vertically"), &TurbulenceParams::nz)
         .key("width_m", Schema::number().greater_than(0.0).default_value(145.0).doc("grid width, centred on y = 0"),
              &TurbulenceParams::width_m)
         .key("height_m", Schema::number().greater_than(0.0).default_value(145.0).doc("grid height, centred on the reference height"),
@@ -35,15 +36,15 @@ const DeckSection<WindParams>& wind_section() {
     DeckSection<WindParams> w;
     w.key("model", Schema::choice({"steady", "power_law", "log", "bts", "turbulent"}).default_value("steady").doc("inflow model"),
           &WindParams::model, wind::parse_wind_model)
-        .key("speed_m_s", Schema::number().at_least(0.0).doc("mean horizontal speed at the reference height"), &WindParams::speed_m_s)
+        .key("speed_m_s", Schema::number().at_least(0.0).at_most(100.0).doc("mean horizontal speed at the reference height"), &WindParams::speed_m_s)
         .key("reference_height_m", Schema::number().greater_than(0.0).default_value(90.0).doc("reference (hub) height above SWL"),
              &WindParams::reference_height_m)
-        .key("shear_exponent", Schema::number().default_value(0.2).doc("power-law exponent"), &WindParams::shear_exponent)
+        .key("shear_exponent", Schema::number().at_least(-1.0).at_most(2.0).default_value(0.2).doc("power-law exponent"), &WindParams::shear_exponent)
         .key("roughness_m", Schema::number().greater_than(0.0).default_value(0.03).doc("log-law roughness length"),
              &WindParams::roughness_m)
-        .key("direction_deg", Schema::number().default_value(0.0).doc("propagation direction, + turns +x towards −y"),
+        .key("direction_deg", Schema::number().at_least(-360.0).at_most(360.0).default_value(0.0).doc("propagation direction, + turns +x towards −y"),
              &WindParams::direction_deg)
-        .key("upflow_deg", Schema::number().default_value(0.0).doc("upflow angle"), &WindParams::upflow_deg)
+        .key("upflow_deg", Schema::number().at_least(-45.0).at_most(45.0).default_value(0.0).doc("upflow angle"), &WindParams::upflow_deg)
         .custom("file", Schema::string().optional().doc("TurbSim .bts file (model bts), relative to this deck"),
                 [](const io::ValidatedDeck& d, const std::string& key, WindParams& p) { p.file = beside_deck(d, key).string(); })
         .key("probe_point_m", number_vector(3, "point of Wind1VelX/Y/Z, inertial").optional(), &WindParams::probe_point_m)
