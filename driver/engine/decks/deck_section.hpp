@@ -117,6 +117,12 @@ class DeckSection {
     for (std::size_t i = 0; i < fields_.size(); ++i)
       if (d.has(fields_[i].key)) readers_[i](d, fields_[i].key, p);
   }
+  // A P with its own defaults, then every declared key the deck holds.
+  P read(const io::ValidatedDeck& d) const {
+    P p{};
+    read_into(d, p);
+    return p;
+  }
 
  private:
   template <class>

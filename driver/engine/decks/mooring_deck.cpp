@@ -64,8 +64,7 @@ const DeckSection<MooringParams>& mooring_section() {
 Schema mooring_schema() { return mooring_section().schema(); }
 
 mooring::MooringParams mooring_params(const io::ValidatedDeck& d) {
-  mooring::MooringParams p;
-  mooring_section().read_into(d, p);
+  mooring::MooringParams p = mooring_section().read(d);
   located(d, [&] { mooring::validate(p); });
   return p;
 }

@@ -115,9 +115,7 @@ const DeckSection<multibody::Params>& structure_section() {
 Schema structure_schema() { return structure_section().schema(); }
 
 multibody::Params structure_params(const io::ValidatedDeck& d) {
-  multibody::Params p;
-  structure_section().read_into(d, p);
-  return p;
+  return structure_section().read(d);
 }
 
 }  // namespace fowtsim::driver

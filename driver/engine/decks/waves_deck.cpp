@@ -223,8 +223,7 @@ const DeckSection<waves::WaveParams>& waves_section() {
 Schema waves_schema() { return waves_section().schema(); }
 
 waves::WaveParams wave_params(const io::ValidatedDeck& d) {
-  waves::WaveParams p;
-  waves_section().read_into(d, p);
+  waves::WaveParams p = waves_section().read(d);
   located(d, [&] { waves::validate(p); });
   return p;
 }

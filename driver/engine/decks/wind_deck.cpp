@@ -59,8 +59,7 @@ const DeckSection<WindParams>& wind_section() {
 Schema wind_schema() { return wind_section().schema(); }
 
 wind::WindParams wind_params(const io::ValidatedDeck& d) {
-  wind::WindParams p;
-  wind_section().read_into(d, p);
+  wind::WindParams p = wind_section().read(d);
   located(d, [&] { wind::validate(p); });
   return p;
 }

@@ -49,9 +49,7 @@ const DeckSection<ToySimulation>& toy_simulation_section() {
 }
 
 ToySimulation toy_simulation(const io::ValidatedDeck& deck) {
-  ToySimulation t;
-  toy_simulation_section().read_into(deck.section("simulation"), t);
-  return t;
+  return toy_simulation_section().read(deck.section("simulation"));
 }
 
 // An oscillator's keys, each once with the Params field it fills (decks/deck_section.hpp); the
@@ -125,10 +123,8 @@ Schema toy_scene_schema() {
 
 RunReport run_toy_scene(const io::ValidatedDeck& deck, const RunRequest& request, const ProgressCallback& progress) {
   const CouplingSettings settings = read_settings(deck, request);
-  toy::SlowOscillator::Params slow;
-  toy::FastOscillator::Params fast;
-  oscillator_section<toy::SlowOscillator::Params>(kSlow).read_into(deck.section("toy_oscillators.slow"), slow);
-  oscillator_section<toy::FastOscillator::Params>(kFast).read_into(deck.section("toy_oscillators.fast"), fast);
+  const auto slow = oscillator_section<toy::SlowOscillator::Params>(kSlow).read(deck.section("toy_oscillators.slow"));
+  const auto fast = oscillator_section<toy::FastOscillator::Params>(kFast).read(deck.section("toy_oscillators.fast"));
   const std::vector<ChannelInfo> all = all_channels(slow, fast);
   const std::vector<std::size_t> picked = select_channels(deck, all, "toy");
 

@@ -97,9 +97,7 @@ const DeckSection<BladesKeys>& blades_section() {
 }
 
 BladesKeys blades_keys(const io::ValidatedDeck& deck) {
-  BladesKeys keys;
-  blades_section().read_into(deck.section("blades"), keys);
-  return keys;
+  return blades_section().read(deck.section("blades"));
 }
 
 }  // namespace
