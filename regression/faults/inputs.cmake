@@ -1,0 +1,1 @@
+# Fault cases: inputs (see CMakeLists.txt beside this file).

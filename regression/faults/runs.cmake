@@ -1,0 +1,1 @@
+# Fault cases: runs (see CMakeLists.txt beside this file).

@@ -1,0 +1,1 @@
+# Fault cases: sweeps (see CMakeLists.txt beside this file).
