@@ -36,8 +36,8 @@ namespace {
 
 constexpr int kExitFail = 1, kExitInput = 2, kExitNumerical = 3;
 
-// SIGINT/SIGTERM stop the run at the end of the current step; the files are closed as
-// "interrupted at t = …", the summary is printed and the exit code is 128 + signal (130, 143).
+// SIGINT/SIGTERM/SIGHUP stop the run at the end of the current step; the files are closed as
+// "interrupted at t = …", the summary is printed and the exit code is 128 + signal (130, 143, 129).
 int run_command(const RunRequest& request) {
   const InterruptHandlers handlers;
   ProgressBar bar(stdout);

@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <type_traits>
 #include <vector>
@@ -159,25 +160,39 @@ struct CheckpointHeader {
   double dt_s = 0.0;    // the scene's step
 };
 
-// Writes header + scene blob to `file` through a temporary name renamed at the end (a crash while
-// writing leaves the previous checkpoint).
+// File layout (format FOWTSIMCHK4): the 11-byte magic, the payload's length and its FNV-1a 64
+// checksum (two uint64), then the payload: the header, the output base of the run that wrote it
+// (so a restart continues that output) and the scene's state through its field lists.
+inline constexpr std::string_view kCheckpointMagic = "FOWTSIMCHK4";
+
+// Writes magic, length, checksum and `payload` to `file` complete or not at all.
+void write_checkpoint_file(const std::filesystem::path& file, const std::string& payload);
+
+// Writes the checkpoint complete or not at all (run/durable_file.hpp: temporary, fsync, rename):
+// a full disk or a kill while writing leaves the previous checkpoint. Throws fowtsim::Error.
 template <class SaveScene>
-void write_checkpoint(const std::filesystem::path& file, const CheckpointHeader& header, SaveScene&& save) {
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
-    os.write("FOWTSIMCHK3", 11);  // 3: the scene state through its field lists
-    CheckpointWriter w(os);
-    w.put(header);
-    save(w);
-  }
-  std::filesystem::rename(tmp, file);
+void write_checkpoint(const std::filesystem::path& file, const CheckpointHeader& header,
+                      const std::filesystem::path& output_base, SaveScene&& save) {
+  std::ostringstream payload;
+  CheckpointWriter w(payload);
+  w.put(header);
+  const std::string base = output_base.string();
+  w.put(std::vector<char>(base.begin(), base.end()));
+  save(w);
+  write_checkpoint_file(file, std::move(payload).str());
 }
 
-// Opens `file`, checks the magic and that it belongs to `deck_hash` with step `dt_s` (InputError
-// naming the file otherwise) and returns its header; the reader continues with the scene blob.
-CheckpointHeader read_checkpoint_header(std::ifstream& is, const std::filesystem::path& file, const std::string& deck_hash,
-                                        double dt_s);
+// A checkpoint read whole and checked: the reader continues with the scene's state in `state`.
+struct LoadedCheckpoint {
+  CheckpointHeader header;
+  std::filesystem::path output_base;  // the output of the run that wrote it, without extension
+  std::istringstream state;
+};
+
+// Reads `file` and checks, each with its own InputError naming the file: that it is a checkpoint
+// of this format, that it is whole (length and checksum: "damaged", e.g. cut short by a full
+// disk), and that it belongs to `deck_hash` with step `dt_s` (another deck or build).
+LoadedCheckpoint read_checkpoint(const std::filesystem::path& file, const std::string& deck_hash, double dt_s);
 std::array<char, 40> hash_field(const std::string& deck_hash);
 
 }  // namespace fowtsim::driver

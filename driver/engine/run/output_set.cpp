@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <exception>
 
 #include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/hdf5_writer.hpp"
 #include "fowtsim/io/text_out_writer.hpp"
+#include "run/durable_file.hpp"
 
 namespace fowtsim::driver {
 
@@ -45,22 +47,60 @@ std::filesystem::path running_path(const std::filesystem::path& final_path) {
   return p;
 }
 
-OutputSet::OutputSet(const std::filesystem::path& base, const std::string& format) {
-  if (base.has_parent_path()) std::filesystem::create_directories(base.parent_path());
-  if (format == "h5" || format == "both") {
-    paths_.push_back(std::filesystem::path(base.string() + ".h5"));
-    running_paths_.push_back(running_path(paths_.back()));
-    sinks_.push_back(std::make_unique<io::Hdf5Writer>(running_paths_.back()));
+namespace {
+
+// Where a dead run's temporary is kept: x.unfinished.h5, or x.unfinished.2.h5, … if taken.
+std::filesystem::path unfinished_name(const std::filesystem::path& final_path) {
+  const std::string stem = final_path.stem().string(), ext = final_path.extension().string();
+  for (int n = 1;; ++n) {
+    std::filesystem::path p = final_path;
+    p.replace_filename(stem + ".unfinished" + (n == 1 ? "" : fmt::format(".{}", n)) + ext);
+    if (!std::filesystem::exists(p)) return p;
   }
-  if (format == "out" || format == "both") {
-    paths_.push_back(std::filesystem::path(base.string() + ".out"));
-    running_paths_.push_back(running_path(paths_.back()));
-    sinks_.push_back(std::make_unique<io::TextOutWriter>(running_paths_.back()));
+}
+
+// Disk space to hold back: a full block of rows in every file plus the files' closing records
+// (HDF5: chunk and object-header updates per dataset; text: the status line).
+std::uint64_t reserve_bytes(std::size_t channels, const std::string& format) {
+  constexpr std::uint64_t kRowsPerBlock = 1024, kPerDatasetMetadata = 4096, kMargin = std::uint64_t{1} << 20;
+  const std::uint64_t columns = channels + 1;
+  std::uint64_t bytes = kMargin;
+  if (format != "out") bytes += columns * (kRowsPerBlock * 8 + kPerDatasetMetadata);
+  if (format != "h5") bytes += columns * kRowsPerBlock * 20;  // " d.dddddddddE+XX\t" per value
+  return bytes;
+}
+
+}  // namespace
+
+OutputSet::OutputSet(const std::filesystem::path& base, const std::string& format) : lock_(base), base_(base) {
+  if (format == "h5" || format == "both") paths_.push_back(std::filesystem::path(base.string() + ".h5"));
+  if (format == "out" || format == "both") paths_.push_back(std::filesystem::path(base.string() + ".out"));
+  for (const auto& p : paths_) {
+    if (std::filesystem::is_directory(p))
+      throw InputError({"run", std::nullopt, "-o", "a file name, not a folder's"},
+                       fmt::format("the output {} is a folder", p.string()));
+    running_paths_.push_back(running_path(p));
+  }
+  // Holding the lock, a temporary already there belongs to a run that died without closing it.
+  for (const auto& p : running_paths_) {
+    if (!std::filesystem::exists(p)) continue;
+    const std::filesystem::path kept = unfinished_name(p.parent_path() / (base.filename().string() + p.extension().string()));
+    std::filesystem::rename(p, kept);
+    set_aside_.push_back(kept);
+    notes_.push_back(fmt::format("{} was left by a run that stopped without closing it (killed?): kept as {}", p.string(),
+                                 kept.string()));
+  }
+  for (const auto& p : running_paths_) {
+    if (p.extension() == ".h5")
+      sinks_.push_back(std::make_unique<io::Hdf5Writer>(p));
+    else
+      sinks_.push_back(std::make_unique<io::TextOutWriter>(p));
   }
 }
 
 OutputSet::~OutputSet() {
   if (finished_) return;
+  reserve_.release();
   sinks_.clear();  // each writer closes its file, keeping the rows appended so far
   if (rows_ > 0) {
     rename_all();
@@ -70,17 +110,56 @@ OutputSet::~OutputSet() {
   }
 }
 
+template <class Write>
+void OutputSet::guarded(Write&& write) {
+  try {
+    write();
+  } catch (const std::exception& e) {
+    const std::filesystem::path folder = base_.has_parent_path() ? base_.parent_path() : ".";
+    const std::uint64_t free = free_bytes(folder);
+    if (!reserve_.release()) throw;
+    // The reserve is free now: finish() can write the buffered rows and the status.
+    if (free < (std::uint64_t{1} << 20))
+      throw Error({"output", std::nullopt, folder.string(), "free some space, then restart from a checkpoint or rerun"},
+                  fmt::format("the disk holding {} is full ({} bytes free): {}", folder.string(), free, e.what()));
+    throw;
+  }
+}
+
 void OutputSet::begin(const std::vector<ChannelInfo>& channels, const io::RunMetadata& metadata) {
-  for (auto& sink : sinks_) sink->begin(channels, metadata);
+  const std::string format = paths_.size() == 2 ? "both" : paths_.front().extension() == ".h5" ? "h5" : "out";
+  reserve_ = DiskReserve(running_path(std::filesystem::path(base_.string() + ".reserve")), reserve_bytes(channels.size(), format));
+  guarded([&] {
+    for (auto& sink : sinks_) sink->begin(channels, metadata);
+  });
 }
 
 void OutputSet::append(double time_s, std::span<const double> values) {
-  for (auto& sink : sinks_) sink->append(time_s, values);
-  ++rows_;
+  ++rows_;  // counted first: a row that fails to reach the disk is still buffered for finish()
+  guarded([&] {
+    // Every sink gets the row even when one fails, so they all hold the same rows at finish().
+    std::exception_ptr failure;
+    for (auto& sink : sinks_) {
+      try {
+        sink->append(time_s, values);
+      } catch (...) {
+        if (!failure) failure = std::current_exception();
+      }
+    }
+    if (failure) std::rethrow_exception(failure);
+  });
+}
+
+void OutputSet::sync() {
+  guarded([&] {
+    for (auto& sink : sinks_) sink->flush();
+    for (const auto& p : running_paths_) sync_file(p);
+  });
 }
 
 void OutputSet::finish(const io::RunEnd& end) {
   finished_ = true;
+  reserve_.release();
   try {
     for (auto& sink : sinks_) sink->finish(end);
   } catch (...) {
@@ -91,8 +170,9 @@ void OutputSet::finish(const io::RunEnd& end) {
   const std::string failed = rename_all();
   if (!failed.empty())
     throw Error({"run", std::nullopt, "output", "check the output folder"}, "cannot rename the output: " + failed);
+  std::error_code ignored;
+  for (const auto& p : adopted_) std::filesystem::remove(p, ignored);
 }
-
 std::string OutputSet::rename_all() noexcept {
   std::string failed;
   for (std::size_t i = 0; i < paths_.size(); ++i) {

@@ -1,11 +1,16 @@
 #pragma once
 // The output files of one run (HDF5 and/or OpenFAST text), fed together, and how their names are
-// chosen.
-//
-// Files are written under a temporary name in the same folder (runs/x.running.h5 for runs/x.h5)
-// and renamed to their final name when the run ends (completed, failed or interrupted), so a
-// good file of an earlier run is replaced only by a run that started: a deck or option error found
-// before the first row leaves it untouched. A live run is watched through the temporary name.
+// chosen. A run owns its files:
+// - it holds the name's lock (run/output_lock.hpp) from before the first file is touched to the
+//   end, so a second run on the same name stops at once and names the holder;
+// - files are written under a temporary name in the same folder (runs/x.running.h5 for
+//   runs/x.h5) and renamed to their final name when the run ends (completed, failed or
+//   interrupted), so a good file of an earlier run is replaced only by a run that started: a deck
+//   or option error found before the first row leaves it untouched;
+// - a temporary left by a run that died without closing it (SIGKILL, power loss) is never
+//   overwritten: it is kept as x.unfinished.h5 (x.unfinished.2.h5, …) and the summary says so;
+// - disk space for closing the files is held back (run/disk_reserve.hpp), so on a full disk the
+//   run stops with every row it computed written and a status saying why.
 #include <filesystem>
 #include <memory>
 #include <span>
@@ -13,6 +18,8 @@
 #include <vector>
 
 #include "fowtsim/io/output_sink.hpp"
+#include "run/disk_reserve.hpp"
+#include "run/output_lock.hpp"
 #include "run/run_types.hpp"
 
 namespace fowtsim::driver {
@@ -35,27 +42,51 @@ std::filesystem::path running_path(const std::filesystem::path& final_path);
 
 class OutputSet {
  public:
-  // format: "h5", "out" or "both"; files are base + ".h5" / ".out"; the directory is created.
+  // format: "h5", "out" or "both"; files are base + ".h5" / ".out"; the folder is created. Takes
+  // the lock and moves a dead run's temporaries aside; a final name that is a folder is an
+  // InputError. Creates no output file yet.
   OutputSet(const std::filesystem::path& base, const std::string& format);
-  // Without finish(): the writers close their files (HDF5 status "incomplete"); files holding at
+  // Without finish(): the writers close their files (status "incomplete"); files holding at
   // least one row get their final name, files without any are removed. Never throws.
   ~OutputSet();
   OutputSet(const OutputSet&) = delete;
   OutputSet& operator=(const OutputSet&) = delete;
 
+  // Holds back disk space for closing the files (fowtsim::Error if the disk cannot spare it), then
+  // creates them.
   void begin(const std::vector<ChannelInfo>& channels, const io::RunMetadata& metadata);
+  // A write that fails frees the held-back space first, so the rows stay buffered for finish();
+  // the error then says whether the disk is full.
   void append(double time_s, std::span<const double> values);
-  // Closes every file with `end` and renames it to its final name.
+  // Every row appended so far on the disk (written and fsync'ed): a checkpoint written after this
+  // is never ahead of the rows.
+  void sync();
+  // Closes every file with `end` and renames it to its final name; the files named by adopt() are
+  // then removed.
   void finish(const io::RunEnd& end);
+  // `file` (a dead run's temporary set aside) has had its rows copied into this output: removed
+  // once this output is finished.
+  void adopt(const std::filesystem::path& file) { adopted_.push_back(file); }
+
   const std::vector<std::filesystem::path>& paths() const { return paths_; }                  // final names
   const std::vector<std::filesystem::path>& running_paths() const { return running_paths_; }  // while running
+  const std::vector<std::filesystem::path>& set_aside() const { return set_aside_; }  // dead runs' temporaries, kept
+  const std::vector<std::string>& notes() const { return notes_; }  // for the run's summary
 
  private:
   std::string rename_all() noexcept;  // running → final names; what failed, or ""
+  template <class Write>
+  void guarded(Write&& write);  // runs `write`; on failure frees the reserve and says why
 
+  OutputLock lock_;  // first: taken before anything else is touched, released last
+  std::filesystem::path base_;
+  DiskReserve reserve_;
   std::vector<std::unique_ptr<io::OutputSink>> sinks_;
   std::vector<std::filesystem::path> paths_;
   std::vector<std::filesystem::path> running_paths_;
+  std::vector<std::filesystem::path> set_aside_;
+  std::vector<std::filesystem::path> adopted_;
+  std::vector<std::string> notes_;
   std::size_t rows_ = 0;
   bool finished_ = false;
 };

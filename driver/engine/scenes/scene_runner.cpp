@@ -3,7 +3,7 @@
 #include <chrono>
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -12,6 +12,7 @@
 #include "decks/deck_section.hpp"
 #include "fowtsim/core/version.hpp"
 #include "run/interrupt.hpp"
+#include "run/earlier_rows.hpp"
 #include "run/output_set.hpp"
 
 namespace fowtsim::driver {
@@ -114,23 +115,44 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
                        fmt::format("--checkpoint-every {:.10g} is not a whole number of steps of {:.10g} s",
                                    *request.checkpoint_every_s, dt));
   }
+  std::optional<LoadedCheckpoint> checkpoint;
   if (request.restart_path) {
-    std::ifstream is(*request.restart_path, std::ios::binary);
-    const CheckpointHeader header = read_checkpoint_header(is, *request.restart_path, plan.deck_hash, dt);
-    if (header.step >= steps)
+    checkpoint = read_checkpoint(*request.restart_path, plan.deck_hash, dt);
+    k0 = checkpoint->header.step;
+    if (k0 >= steps)
       throw InputError({"scene", std::nullopt, "--restart", "a checkpoint before the end of the run"},
                        fmt::format("{}: the checkpoint is at t = {:.10g} s, the run ends at {:.10g} s",
-                                   request.restart_path->string(), plan.t0_s + header.step * dt, plan.t_max_s));
-    CheckpointReader reader(is, *request.restart_path);
+                                   request.restart_path->string(), plan.t0_s + k0 * dt, plan.t_max_s));
+    CheckpointReader reader(checkpoint->state, *request.restart_path);
     scene.load(reader);
-    k0 = header.step;
+    if (checkpoint->state.peek() != std::char_traits<char>::eof()) reader.mismatch("the state's length");
   }
-  const std::filesystem::path checkpoint_file = plan.base.string() + ".chk";
-  OutputSet outputs(plan.base, plan.format);
+  // A restart continues the output of the run that wrote the checkpoint unless -o names another.
+  const std::filesystem::path base = checkpoint && !request.output_base ? checkpoint->output_base : plan.base;
+  const std::filesystem::path checkpoint_file = base.string() + ".chk";
+  OutputSet outputs(base, plan.format);
   scene.metadata.version = kVersion;
   outputs.begin(scene.written, scene.metadata);
+  // t0 + k·dt, not a running sum: every row time is exact to one rounding (and t0 = 0 adds none).
+  auto time_of = [&](long step) { return plan.t0_s + static_cast<double>(step) * dt; };
+  bool first_row_due = true;
+  std::vector<std::string> notes = outputs.notes();
+  if (checkpoint) {
+    const double row_interval = static_cast<double>(plan.decimation) * dt;
+    EarlierRows earlier = earlier_rows(checkpoint->output_base, outputs, scene.written, plan.deck_hash, time_of(k0), row_interval);
+    std::vector<double> values(scene.written.size());
+    for (std::size_t r = 0; r < earlier.table.rows(); ++r) {
+      for (std::size_t c = 0; c < values.size(); ++c) values[c] = earlier.table.columns[c + 1][r];
+      outputs.append(earlier.table.columns[0][r], values);
+    }
+    if (earlier.table.rows() > 0) first_row_due = k0 % plan.decimation == 0;  // continue the original's rows
+    const auto& kept = outputs.set_aside();
+    if (std::find(kept.begin(), kept.end(), earlier.source) != kept.end()) outputs.adopt(earlier.source);
+    notes.insert(notes.end(), earlier.notes.begin(), earlier.notes.end());
+  }
 
   RunReport report;
+  report.warnings = notes;
   // A run far outside sense still runs, but says so (e.g. dt 1e-12 s wrote 600 MB in 60 s).
   const double rows = static_cast<double>(steps - k0) / static_cast<double>(plan.decimation) + 1.0;
   const double bytes = rows * static_cast<double>(scene.written.size() + 1) * (plan.format == "both" ? 2.0 * 8.0 : 8.0);
@@ -149,22 +171,22 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   long k = k0;
-  // t0 + k·dt, not a running sum: every row time is exact to one rounding (and t0 = 0 adds none).
-  auto time_of = [&](long step) { return plan.t0_s + static_cast<double>(step) * dt; };
   double t = time_of(k);
   try {
-    write_row(t);
+    if (first_row_due) write_row(t);
     while (k < steps && interrupt_signal() == 0) {  // a signal stops the run at the end of a step
       scene.step(t, dt);
       ++k;
       t = time_of(k);
       if (k % plan.decimation == 0) write_row(t);
-      if (checkpoint_steps > 0 && k % checkpoint_steps == 0)
-        write_checkpoint(checkpoint_file, {hash_field(plan.deck_hash), k, dt}, scene.save);
+      if (checkpoint_steps > 0 && k % checkpoint_steps == 0) {
+        outputs.sync();  // the rows first: a checkpoint is never ahead of the saved rows
+        write_checkpoint(checkpoint_file, {hash_field(plan.deck_hash), k, dt}, base, scene.save);
+      }
       if (progress) progress(t, plan.t_max_s);
     }
   } catch (const std::exception& e) {  // numerical trouble, or a failing external controller
-    outputs.finish({elapsed(), std::string("failed: ") + e.what(), t, {}});
+    outputs.finish({elapsed(), std::string("failed: ") + e.what(), t, report.warnings});
     throw;
   }
   report.wall_s = elapsed();

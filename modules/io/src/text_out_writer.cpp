@@ -1,6 +1,10 @@
 #include "fowtsim/io/text_out_writer.hpp"
 
-#include <cstdio>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <iterator>
 #include <string>
 #include <utility>
@@ -12,10 +16,17 @@
 namespace fowtsim::io {
 namespace {
 
-struct FileCloser {
-  void operator()(std::FILE* file) const noexcept { std::fclose(file); }
-};
-using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
+constexpr std::size_t kStatusWidth = 160;  // characters of header line 5 after "Status: "
+
+// The status as it fits in line 5: one line, at most kStatusWidth characters, padded with blanks
+// so that rewriting it never moves the rows after it.
+std::string status_field(std::string status) {
+  for (char& c : status)
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  if (status.size() > kStatusWidth) status = status.substr(0, kStatusWidth - 3) + "...";
+  status.resize(kStatusWidth, ' ');
+  return status;
+}
 
 }  // namespace
 
@@ -27,10 +38,12 @@ struct TextOutWriter::Impl {
   TextOutOptions options;
   FlushPolicy policy;
   Phase phase = Phase::created;
-  FilePtr file;
-  std::size_t channel_count = 0;       // declared channels, without Time
-  std::size_t rows_since_flush = 0;
-  fmt::memory_buffer line;             // one formatted row; reused, so no allocation per append
+  int fd = -1;
+  std::size_t channel_count = 0;   // declared channels, without Time
+  std::size_t pending_rows = 0;    // rows in `pending`
+  off_t durable_bytes = 0;         // bytes of whole rows (and the header) in the file
+  off_t status_offset = 0;         // where the status text of line 5 starts
+  fmt::memory_buffer pending;      // formatted rows not yet in the file; reserved once, at begin
 
   Impl(std::filesystem::path p, TextOutOptions o)
       : path(std::move(p)), path_text(path.string()), options(std::move(o)),
@@ -40,22 +53,42 @@ struct TextOutWriter::Impl {
     throw Error(ErrorContext{"io.text", std::nullopt, path_text, hint}, message);
   }
 
-  void write_line() {
-    if (std::fwrite(line.data(), 1, line.size(), file.get()) != line.size()) {
-      fail("cannot write to the file", "check free disk space");
+  // Writes `pending` after the last whole row. A failed write is cut back to that row (so the file
+  // never ends in a partial one) and the rows stay pending for the next try.
+  void write_pending() {
+    std::size_t done = 0;
+    while (done < pending.size()) {
+      const ssize_t n = ::pwrite(fd, pending.data() + done, pending.size() - done, durable_bytes + static_cast<off_t>(done));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        const int error = n < 0 ? errno : ENOSPC;
+        (void)!::ftruncate(fd, durable_bytes);
+        fail(fmt::format("cannot write {} rows: {}", pending_rows, std::strerror(error)), "check free disk space");
+      }
+      done += static_cast<std::size_t>(n);
     }
+    durable_bytes += static_cast<off_t>(pending.size());
+    pending.clear();
+    pending_rows = 0;
+    policy.flushed();
   }
 
-  void flush_file() {
-    if (std::fflush(file.get()) != 0) fail("cannot flush the file", "check free disk space");
-    rows_since_flush = 0;
-    policy.flushed();
+  void write_status(const std::string& status) {
+    const std::string field = status_field(status);
+    if (::pwrite(fd, field.data(), field.size(), status_offset) != static_cast<ssize_t>(field.size()))
+      fail(fmt::format("cannot write the status: {}", std::strerror(errno)), "check free disk space");
+  }
+
+  void close_file() {
+    const int f = fd;
+    fd = -1;
+    if (::close(f) != 0) fail(fmt::format("cannot close the file: {}", std::strerror(errno)), "check free disk space");
   }
 
   void append_number(double value) {
     // fmt is locale-independent (printf is not) and gives d.dddE±XX with at least 2 exponent digits;
     // a blank in place of the plus sign keeps columns aligned, as in OpenFAST outputs.
-    fmt::format_to(std::back_inserter(line), "{: .{}E}", value, options.significant_digits - 1);
+    fmt::format_to(std::back_inserter(pending), "{: .{}E}", value, options.significant_digits - 1);
   }
 };
 
@@ -69,35 +102,43 @@ TextOutWriter::TextOutWriter(std::filesystem::path path, TextOutOptions options)
 }
 
 TextOutWriter::~TextOutWriter() {
-  // Closing the FILE writes whatever the C library still buffers; nothing here may throw.
-  if (impl_->file) std::fflush(impl_->file.get());
+  Impl& w = *impl_;
+  if (w.fd < 0) return;
+  // Reached without finish(): keep every row that can be written and say so; nothing may throw.
+  try {
+    w.write_pending();
+  } catch (...) {
+  }
+  try {
+    w.write_status("incomplete: output closed before the run finished");
+  } catch (...) {
+  }
+  ::close(w.fd);
 }
 
 void TextOutWriter::begin(const std::vector<ChannelInfo>& channels, const RunMetadata& metadata) {
   Impl& w = *impl_;
   if (w.phase != Impl::Phase::created) w.fail("begin() called twice");
-  w.file.reset(std::fopen(w.path_text.c_str(), "wb"));
-  if (!w.file) w.fail("cannot create the file", "check that the directory exists and is writable");
-  // A large stdio buffer: the kernel sees a few big writes, and fflush decides when data is durable.
-  std::setvbuf(w.file.get(), nullptr, _IOFBF, std::size_t{1} << 20);
+  w.fd = ::open(w.path_text.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (w.fd < 0) w.fail(fmt::format("cannot create the file: {}", std::strerror(errno)), "check that the folder exists and is writable");
   w.phase = Impl::Phase::open;
   w.channel_count = channels.size();
 
-  auto out = std::back_inserter(w.line);
-  w.line.clear();
+  auto out = std::back_inserter(w.pending);
   fmt::format_to(out, "\nPredictions were generated by fowtsim {}\n", metadata.version);
-  fmt::format_to(out, "Deck: {} (hash {})\n", metadata.deck_path, metadata.deck_hash);
-  if (!w.options.description.empty()) fmt::format_to(out, "{}\n", w.options.description);
-  fmt::format_to(out, "\nTime");
+  fmt::format_to(out, "Deck: {} (hash {})", metadata.deck_path, metadata.deck_hash);
+  if (!w.options.description.empty()) fmt::format_to(out, "; {}", w.options.description);
+  fmt::format_to(out, "\n\nStatus: ");
+  w.status_offset = static_cast<off_t>(w.pending.size());
+  fmt::format_to(out, "{}\n\nTime", status_field("running"));
   for (const ChannelInfo& channel : channels) fmt::format_to(out, "\t{}", channel.name);
   fmt::format_to(out, "\n(s)");
   for (const ChannelInfo& channel : channels) fmt::format_to(out, "\t({})", channel.unit);
   fmt::format_to(out, "\n");
-  w.write_line();
-  w.flush_file();
-  // Reserve the longest row once: sign, digits, point, "E+XXX" and a separator per number.
-  w.line.clear();
-  w.line.reserve((channels.size() + 1) * (static_cast<std::size_t>(w.options.significant_digits) + 9));
+  w.write_pending();
+  // Reserve a block of the longest rows once: sign, digits, point, "E+XXX" and a separator per number.
+  const std::size_t row_bytes = (channels.size() + 1) * (static_cast<std::size_t>(w.options.significant_digits) + 9);
+  w.pending.reserve(row_bytes * w.policy.rows_per_block());
 }
 
 void TextOutWriter::append(double time_s, std::span<const double> values) {
@@ -107,27 +148,26 @@ void TextOutWriter::append(double time_s, std::span<const double> values) {
     w.fail(fmt::format("append() got {} values for {} declared channels", values.size(),
                        w.channel_count));
   }
-  w.line.clear();
   w.append_number(time_s);
   for (const double value : values) {
-    w.line.push_back('\t');
+    w.pending.push_back('\t');
     w.append_number(value);
   }
-  w.line.push_back('\n');
-  w.write_line();
-  if (w.policy.due(++w.rows_since_flush)) w.flush_file();
+  w.pending.push_back('\n');
+  if (w.policy.due(++w.pending_rows)) w.write_pending();
 }
 
 void TextOutWriter::flush() {
-  if (impl_->phase == Impl::Phase::open) impl_->flush_file();
+  if (impl_->phase == Impl::Phase::open) impl_->write_pending();
 }
 
-void TextOutWriter::finish(const RunEnd& /*end: not representable in an OpenFAST .out*/) {
+void TextOutWriter::finish(const RunEnd& end) {
   Impl& w = *impl_;
   if (w.phase != Impl::Phase::open) w.fail("finish() before begin() or called twice");
-  w.flush_file();
+  w.write_pending();
+  w.write_status(end.status);
   w.phase = Impl::Phase::finished;
-  if (std::fclose(w.file.release()) != 0) w.fail("cannot close the file", "check free disk space");
+  w.close_file();
 }
 
 }  // namespace fowtsim::io
