@@ -61,7 +61,10 @@ int compare_command(const std::string& ref, const std::string& test, const std::
   options.statistics = stats;
   options.wohler_exponent = wohler_exponent;
   if (!channels.empty()) options.channels = channels;
-  const ComparisonReport report = compare_tables(io::read_channels(ref), io::read_channels(test), options);
+  const io::ChannelTable reference = io::read_channels(ref), tested = io::read_channels(test);
+  for (const auto& [table, name] : {std::pair(&reference, ref), std::pair(&tested, test)})
+    for (const std::string& warning : io::reading_warnings(*table, name)) fmt::print(stderr, "warning: {}\n", warning);
+  const ComparisonReport report = compare_tables(reference, tested, options);
   print_comparison(stdout, report);
   return report.pass() ? 0 : kExitFail;
 }

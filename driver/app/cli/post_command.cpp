@@ -95,6 +95,7 @@ void add_calculated(io::ChannelTable& table, const std::vector<CalculatedChannel
 void Analysis::file(const std::filesystem::path& path) {
   const std::string name = path.string();
   io::ChannelTable table = io::read_channels(path);
+  for (const std::string& warning : io::reading_warnings(table, name)) fmt::print(stderr, "warning: {}\n", warning);
   if (fatigue) add_calculated(table, fatigue->calculated, name);
   const post::RowRange rows = post::rows_in_window(table.time(), options.window);
   const std::span<const double> time = rows_of(table.time(), rows);

@@ -26,7 +26,8 @@ std::pair<std::filesystem::path, std::string> split_known_extension(const std::f
 RunRequest resolve_output_names(const RunRequest& request) {
   RunRequest r = request;
   if (!r.output_base) {
-    r.output_base = std::filesystem::path("runs") / r.deck_path.stem();
+    // A restart continues the output of the run that wrote its checkpoint (recorded in it).
+    if (!r.restart_path) r.output_base = std::filesystem::path("runs") / r.deck_path.stem();
     return r;
   }
   const auto [base, ext] = split_known_extension(*r.output_base, {".h5", ".out"});

@@ -24,7 +24,8 @@
 
 namespace fowtsim::driver {
 
-// Output names of a request: no -o gives runs/<deck file stem> (bd_driver.inp → runs/bd_driver);
+// Output names of a request: no -o gives runs/<deck file stem> (bd_driver.inp → runs/bd_driver),
+// except for a restart, whose output is the checkpoint's run's own (left unset here);
 // an -o ending in .h5 or .out is taken as the file name: its extension is removed from
 // output_base and, when --out-format is absent, picks the format (overriding the deck's
 // output.format); with --out-format both it only names the pair (x.h5 → x.h5 and x.out). An

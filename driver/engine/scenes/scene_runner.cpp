@@ -130,6 +130,7 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
   // A restart continues the output of the run that wrote the checkpoint unless -o names another.
   const std::filesystem::path base = checkpoint && !request.output_base ? checkpoint->output_base : plan.base;
   const std::filesystem::path checkpoint_file = base.string() + ".chk";
+  const std::filesystem::path absolute_base = std::filesystem::absolute(base);  // recorded in checkpoints
   OutputSet outputs(base, plan.format);
   scene.metadata.version = kVersion;
   outputs.begin(scene.written, scene.metadata);
@@ -181,7 +182,7 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
       if (k % plan.decimation == 0) write_row(t);
       if (checkpoint_steps > 0 && k % checkpoint_steps == 0) {
         outputs.sync();  // the rows first: a checkpoint is never ahead of the saved rows
-        write_checkpoint(checkpoint_file, {hash_field(plan.deck_hash), k, dt}, base, scene.save);
+        write_checkpoint(checkpoint_file, {hash_field(plan.deck_hash), k, dt}, absolute_base, scene.save);
       }
       if (progress) progress(t, plan.t_max_s);
     }

@@ -25,6 +25,19 @@ const std::vector<double>& ChannelTable::time() const {
   return columns.front();
 }
 
+std::vector<std::string> reading_warnings(const ChannelTable& table, const std::string& source) {
+  std::vector<std::string> warnings = table.warnings;
+  const double last = table.rows() ? table.time().back() : 0.0;
+  if (table.status == "running")
+    warnings.push_back(fmt::format("{}: status 'running': the run that writes it is still going, or it died without closing "
+                                   "the file (SIGKILL, power loss); its rows up to t = {:.6g} s are read",
+                                   source, last));
+  else if (!table.status.empty() && table.status != "completed")
+    warnings.push_back(fmt::format("{}: the run did not complete (status '{}'); its rows up to t = {:.6g} s are read", source,
+                                   table.status, last));
+  return warnings;
+}
+
 void normalise_time_channel(ChannelTable& table, const std::string& source) {
   const auto fail = [&](const std::string& message, const std::string& hint) {
     throw InputError(ErrorContext{"io", std::nullopt, source, hint}, message);

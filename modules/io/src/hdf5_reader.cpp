@@ -128,10 +128,11 @@ ChannelTable read_hdf5_channels(const std::filesystem::path& path) {
   for (auto& column : table.columns) column.resize(rows);
 
   const hid_t root = file.get();
+  table.status = read_string_attribute(root, "status", name).value_or("");
   table.description = fmt::format(
-      "fowtsim {}; deck {}; status {}", read_string_attribute(root, "version", name).value_or("?"),
+      "fowtsim {}; deck {} (hash {}); status {}", read_string_attribute(root, "version", name).value_or("?"),
       read_string_attribute(root, "deck_path", name).value_or("?"),
-      read_string_attribute(root, "status", name).value_or("?"));
+      read_string_attribute(root, "deck_hash", name).value_or("?"), table.status.empty() ? "?" : table.status);
   normalise_time_channel(table, name);
   return table;
 }

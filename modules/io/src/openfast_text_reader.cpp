@@ -177,6 +177,7 @@ ChannelTable read_openfast_text(const std::filesystem::path& path) {
   for (const std::string_view header_line : header) {
     const std::string_view trimmed = trim(header_line);
     if (trimmed.empty()) continue;
+    if (trimmed.starts_with("Status: ")) table.status = trim(trimmed.substr(8));  // ours: line 5
     if (!table.description.empty()) table.description += '\n';
     table.description += trimmed;
   }
@@ -194,10 +195,20 @@ ChannelTable read_openfast_text(const std::filesystem::path& path) {
   const std::size_t channel_count = table.names.size();
   table.columns.resize(channel_count);
   bool reserved = false;
+  // The file's last line without its newline is a row cut short when it does not read whole
+  // (the writer died mid-row): it is dropped with a warning rather than failing the whole file.
+  const bool unterminated = !text.empty() && text.back() != '\n';
+  auto cut_short = [&](const std::string& what) {
+    if (!unterminated || lines.remaining_bytes() > 0) return false;
+    table.warnings.push_back(fmt::format("{}:{}: the last row is cut short ({}): dropped", name, lines.number(), what));
+    for (auto& values : table.columns) values.resize(table.columns.back().size());
+    return true;
+  };
   while (lines.next(line)) {
     const char* p = line.data();
     const char* const end = p + line.size();
     std::size_t column = 0;
+    bool dropped = false;
     while (true) {
       while (p != end && is_blank(*p)) ++p;
       if (p == end) break;
@@ -209,6 +220,10 @@ ChannelTable read_openfast_text(const std::filesystem::path& path) {
       }
       double value = 0.0;
       if (!parse_number(token, value)) {
+        if (cut_short(fmt::format("'{}' in channel {}", token, table.names[column]))) {
+          dropped = true;
+          break;
+        }
         fail(lines.number(), fmt::format("cannot read '{}' as a number (channel {})", token,
                                          table.names[column]));
       }
@@ -216,7 +231,9 @@ ChannelTable read_openfast_text(const std::filesystem::path& path) {
       ++column;
       p = token_end;
     }
+    if (dropped) break;
     if (column == 0) continue;  // blank line (trailing blank lines are common)
+    if (column != channel_count && cut_short(fmt::format("{} of {} values", column, channel_count))) break;
     if (column != channel_count) {
       fail(lines.number(), fmt::format("{} values on the row, expected {}", column, channel_count));
     }

@@ -16,6 +16,10 @@ struct ChannelTable {
   std::vector<std::vector<double>> columns;  // columns[c][row]: value of channel c at row; all columns
                                              // have rows() entries; columns[0] is time [s]
   std::string description;                   // free text from the file header (program, deck, ...)
+  std::string status;                        // how the run that wrote the file ended, as the file says
+                                             // ("completed", "interrupted at t = …", "failed: …",
+                                             // "running"); empty when the file does not say (OpenFAST's)
+  std::vector<std::string> warnings;         // what the reader read past (e.g. a row cut short)
 
   // Number of time rows (0 for an empty table).
   std::size_t rows() const;
@@ -24,6 +28,10 @@ struct ChannelTable {
   // The time column [s]; throws fowtsim::Error if the table has no columns.
   const std::vector<double>& time() const;
 };
+
+// What a reader of `table` should be told: the reader's warnings, and whether the file says its
+// run did not complete (a status neither empty nor "completed"), naming `source`.
+std::vector<std::string> reading_warnings(const ChannelTable& table, const std::string& source);
 
 // Checks the shape of a freshly read table (as many units and columns as names, columns of equal
 // length) and normalises its first column to the time channel: a first name equal to "Time"
