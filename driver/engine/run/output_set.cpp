@@ -171,8 +171,10 @@ void OutputSet::finish(const io::RunEnd& end) {
   const std::string failed = rename_all();
   if (!failed.empty())
     throw Error({"run", std::nullopt, "output", "check the output folder"}, "cannot rename the output: " + failed);
+  // Only a completed output holds every row an adopted file had (an interrupted one may end before it).
   std::error_code ignored;
-  for (const auto& p : adopted_) std::filesystem::remove(p, ignored);
+  if (end.status == "completed")
+    for (const auto& p : adopted_) std::filesystem::remove(p, ignored);
 }
 std::string OutputSet::rename_all() noexcept {
   std::string failed;

@@ -62,11 +62,11 @@ class OutputSet {
   // Every row appended so far on the disk (written and fsync'ed): a checkpoint written after this
   // is never ahead of the rows.
   void sync();
-  // Closes every file with `end` and renames it to its final name; the files named by adopt() are
-  // then removed.
+  // Closes every file with `end` and renames it to its final name; if the run completed, the files
+  // named by adopt() are then removed.
   void finish(const io::RunEnd& end);
-  // `file` (a dead run's temporary set aside) has had its rows copied into this output: removed
-  // once this output is finished.
+  // `file` (a dead run's temporary set aside) is continued by this output: removed once this
+  // output holds the whole run.
   void adopt(const std::filesystem::path& file) { adopted_.push_back(file); }
 
   const std::vector<std::filesystem::path>& paths() const { return paths_; }                  // final names

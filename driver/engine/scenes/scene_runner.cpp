@@ -147,8 +147,10 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
       outputs.append(earlier.table.columns[0][r], values);
     }
     if (earlier.table.rows() > 0) first_row_due = k0 % plan.decimation == 0;  // continue the original's rows
+    // Continuing a dead run's temporary continues all of that run's files (.h5 and .out).
     const auto& kept = outputs.set_aside();
-    if (std::find(kept.begin(), kept.end(), earlier.source) != kept.end()) outputs.adopt(earlier.source);
+    if (std::find(kept.begin(), kept.end(), earlier.source) != kept.end())
+      for (const auto& file : kept) outputs.adopt(file);
     notes.insert(notes.end(), earlier.notes.begin(), earlier.notes.end());
   }
 

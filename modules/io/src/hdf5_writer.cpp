@@ -101,8 +101,15 @@ struct Hdf5Writer::Impl {
     // Every element is written before it is read; skipping the fill saves a pass over each chunk.
     check(H5Pset_fill_time(dcpl.get(), H5D_FILL_TIME_NEVER), path_text, "cannot set fill time",
           info.name);
+    // No chunk cache: H5Dwrite puts the rows on the disk itself and reports a failed write (a full
+    // disk) for its own dataset, and a retry writes them again. Through the cache a chunk whose
+    // write failed inside H5Fflush was dropped (seen on a full tmpfs: one channel's block read 0).
+    const Handle dapl = checked(H5Pcreate(H5P_DATASET_ACCESS), H5Pclose, path_text,
+                                "cannot create property list", info.name);
+    check(H5Pset_chunk_cache(dapl.get(), 0, 0, H5D_CHUNK_CACHE_W0_DEFAULT), path_text, "cannot set chunk cache",
+          info.name);
     Handle dataset = checked(H5Dcreate2(file.get(), info.name.c_str(), H5T_IEEE_F64LE, space.get(),
-                                        H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
+                                        H5P_DEFAULT, dcpl.get(), dapl.get()),
                              H5Dclose, path_text, "cannot create dataset", info.name);
     write_string_attribute(dataset.get(), "unit", info.unit, path_text);
     write_string_attribute(dataset.get(), "description", info.description, path_text);
@@ -111,7 +118,9 @@ struct Hdf5Writer::Impl {
     dataset_names.push_back(info.name);
   }
 
-  // Writes the buffered rows as one hyperslab per dataset, then flushes the file to disk.
+  // Writes the buffered rows as one hyperslab per dataset, then flushes the file to disk. The rows
+  // leave the buffer only once the flush succeeded: after a failed one (a full disk) HDF5 may hold
+  // some of the block's chunks only half written, so a retry writes the whole block again.
   void write_buffered_and_flush() {
     if (buffered_rows > 0) {
       const hsize_t start = written_rows;
@@ -131,10 +140,10 @@ struct Hdf5Writer::Impl {
                        buffer.data() + c * block()),
               path_text, "cannot write rows", name);
       }
-      written_rows += buffered_rows;
-      buffered_rows = 0;
     }
     check(H5Fflush(file.get(), H5F_SCOPE_LOCAL), path_text, "cannot flush file");
+    written_rows += buffered_rows;
+    buffered_rows = 0;
     policy.flushed();
   }
 };
@@ -215,6 +224,7 @@ void Hdf5Writer::append(double time_s, std::span<const double> values) {
                          w.datasets.size() - 1));
   }
   const std::size_t block = w.block();
+  if (w.buffered_rows == block) w.write_buffered_and_flush();  // a failed flush left a full block
   double* row = w.buffer.data() + w.buffered_rows;
   row[0] = time_s;
   for (std::size_t c = 0; c < values.size(); ++c) row[(c + 1) * block] = values[c];
