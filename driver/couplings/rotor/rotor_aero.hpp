@@ -10,6 +10,7 @@
 
 #include "fowtsim/aero/aero.hpp"
 #include "fowtsim/aero/rigid_rotor.hpp"
+#include "fowtsim/aero/tower_drag.hpp"
 #include "fowtsim/core/channels.hpp"
 #include "fowtsim/multibody/kinematics.hpp"
 #include "fowtsim/multibody/model.hpp"
@@ -49,6 +50,18 @@ class RotorAero {
   void evaluate_placed(double t, const Vec3& apex_m, const Mat3& t_gh, double rotor_speed_rad_s,
                        std::span<const double> pitch_rad, const Vec3& tower_base_m, const Vec3& tower_axis,
                        aero::Induction induction, Data& d) const;
+
+  // Workspace of tower_drag(), sized by make_tower_workspace(): written before it is read.
+  struct TowerWorkspace {
+    std::vector<Vec3> position, velocity, inflow;  // per tower station, g
+  };
+  TowerWorkspace make_tower_workspace() const;
+  bool tower_drag_on() const { return params_.tower_drag; }
+  // Aerodynamic drag on the rigid tower (aero.tower_drag, AeroDyn TwrAero; aero/tower_drag.hpp) at
+  // time t in the chain configuration `chain`: the stations on the tower axis through
+  // tower_axis_at_sea_level, moving with the base body, in the wind of the field (the mean profile
+  // below a turbulence grid); force and moment about the platform reference point r, g [N, N·m].
+  aero::TowerDragLoad tower_drag(double t, const multibody::ChainKinematics& chain, TowerWorkspace& w) const;
 
   // Unsteady airfoil aerodynamics and dynamic inflow (aero.unsteady_airfoil, aero.dynamic_inflow):
   // their states are read by every evaluation and advanced only here. Nothing happens when the

@@ -122,10 +122,13 @@ const DeckSection<AeroKeys>& aero_section() {
              [](const std::string& v) {
                return v == "powles" ? TowerShadow::powles : v == "eames" ? TowerShadow::eames : TowerShadow::none;
              })
+        .key("tower_drag", Schema::boolean().default_value(false)
+                               .doc("aerodynamic drag on the tower, 1/2 rho Cd D |v|v normal to its axis (AeroDyn TwrAero)"),
+             &Params::tower_drag)
         .key("output_nodes", Schema::sequence(Schema::integer().at_least(1)).max_items(9).optional().doc("1-based nodes of B·N· channels"),
              &Params::output_nodes)
         .section("blade", blade, same, false, "blade aerodynamic geometry")
-        .section("tower", tower, same, true, "tower for its influence on the inflow");
+        .section("tower", tower, same, true, "tower for its influence on the inflow and its drag");
     return a;
   }();
   return section;

@@ -44,7 +44,9 @@ FrameMotion platform_motion(const multibody::State& s) {
 class FloatingScene::StageLoads final : public multibody::LoadProvider {
  public:
   StageLoads(const multibody::Model& model, const SeaModules& sea, const RotorAero* rotor, const TurbineBlades* blades)
-      : model_(model), sea_(sea), rotor_(rotor), blades_(blades) {}
+      : model_(model), sea_(sea), rotor_(rotor), blades_(blades) {
+    if (rotor_) tower_ = rotor_->make_tower_workspace();
+  }
   void act_on(const HeldDemands& held, SeaModules::Data& sea, RotorAero::Data* aero, const TurbineBlades::Data* blades) {
     held_ = &held;
     sea_data_ = &sea;
@@ -58,14 +60,18 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
     out.platform_moment_N_m += load.tail<3>();
     out.platform_added_mass = sea_.added_mass(*sea_data_);
     out.generator_torque_N_m = held_->generator_torque_N_m;
+    if (blades_ || rotor_) multibody::chain_kinematics(model_, s, chain_);
     if (blades_) {  // flexible blades: their held root loads, aerodynamics included
-      multibody::chain_kinematics(model_, s, chain_);
       blades_->add_stage_loads(chain_, *blades_data_, out);
     } else if (rotor_) {
-      multibody::chain_kinematics(model_, s, chain_);
       rotor_->evaluate(t, chain_, s.rotor_speed_rad_s, held_->pitch_rad, *aero_data_);
       out.rotor_force_N = aero_data_->force_N;
       out.rotor_moment_N_m = aero_data_->moment_N_m;
+    }
+    if (rotor_ && rotor_->tower_drag_on()) {  // on the rigid tower, part of the base body: about r
+      const aero::TowerDragLoad drag = rotor_->tower_drag(t, chain_, tower_);
+      out.platform_force_N += drag.force_N;
+      out.platform_moment_N_m += drag.moment_N_m;
     }
   }
   multibody::SpinMotion rotor_spin(double t) override {
@@ -82,6 +88,7 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
   RotorAero::Data* aero_data_ = nullptr;
   const TurbineBlades::Data* blades_data_ = nullptr;
   multibody::ChainKinematics chain_;  // workspace
+  RotorAero::TowerWorkspace tower_;    // workspace
 };
 
 Schema floating_scene_schema() {

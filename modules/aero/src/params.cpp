@@ -47,12 +47,12 @@ void check_blade(const Params& params, Problems& p) {
 
 void check_tower(const Params& params, Problems& p) {
   const bool used = params.tower_potential != TowerPotential::none ||
-                    params.tower_shadow != TowerShadow::none;
+                    params.tower_shadow != TowerShadow::none || params.tower_drag;
   if (!used) return;
   const int n = static_cast<int>(params.tower.size());
   if (n < 2) {
     p.lines.push_back(fmt::format("aero.tower.nodes: {} rows (expected at least 2 when "
-                                  "tower_potential or tower_shadow is on)", n));
+                                  "tower_potential, tower_shadow or tower_drag is on)", n));
   }
   for (int i = 0; i < n; ++i) {
     const TowerNodeParams& t = params.tower[i];

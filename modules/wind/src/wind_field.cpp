@@ -47,13 +47,15 @@ WindField::WindField(WindParams params, std::shared_ptr<const FullField> field)
   reference_point_m_ = Vec3(0.0, 0.0, params_.reference_height_m);
 }
 
-Vec3 WindField::velocity(const Vec3& p, double time_s) const {
+Vec3 WindField::velocity(const Vec3& p, double time_s) const { return velocity_at(p, time_s, true); }
+
+Vec3 WindField::velocity_at(const Vec3& p, double time_s, bool count_below) const {
   const Vec3 p_wind = wind_to_inertial_.transpose() * (p - reference_point_m_) + reference_point_m_;
   Vec3 v_wind;
   if (field_ && covers(*field_, p_wind)) {
     v_wind = full_field_velocity(*field_, p_wind, time_s);
   } else if (field_) {
-    ++outside_queries_;
+    if (count_below || p_wind.z() >= field_->z_bottom_m) ++outside_queries_;
     const double z = std::max(p_wind.z(), 0.0);
     v_wind = Vec3(field_->u_hub_m_s * std::pow(z / field_->z_hub_m, params_.shear_exponent), 0.0, 0.0);
   } else {
@@ -72,6 +74,10 @@ void WindField::velocities(std::span<const Vec3> points, double time_s, std::spa
                      "points.size() (" + std::to_string(points.size()) + ") != out.size() (" +
                          std::to_string(out.size()) + ")");
   for (std::size_t i = 0; i < points.size(); ++i) out[i] = velocity(points[i], time_s);
+}
+
+void WindField::velocities_profile_below(std::span<const Vec3> points, double time_s, std::span<Vec3> out) const {
+  for (std::size_t i = 0; i < points.size() && i < out.size(); ++i) out[i] = velocity_at(points[i], time_s, false);
 }
 
 Wind::State Wind::make_state(const Params&) { return State{}; }

@@ -1,5 +1,6 @@
 // The full-field evaluation: bilinear in y–z, linear in time, Taylor's shift and periodic wrap,
 // tower points, and errors outside the box.
+#include <array>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -127,4 +128,28 @@ TEST_CASE("a wind field answers points beyond the grid with the mean profile", "
     CHECK(v.z() == 0.0);
   }
   CHECK(field.outside_queries() == 3);
+}
+
+// Intent: the tower's foot lies below the grid by design (the tower drag's stations): those points
+// take the same mean profile without being counted; a point beside the grid still is.
+TEST_CASE("points below the grid asked for as such take the profile uncounted", "[unit][wind]") {
+  WindParams params;
+  params.model = WindModel::bts;
+  params.file = "synthetic.bts";
+  params.shear_exponent = 0.2;
+  params.reference_height_m = 92.0;
+  FullField f = linear_field(false);
+  f.n_tower = 0;  // no tower column: below the grid only the profile is known
+  f.tower.clear();
+  const WindField field(params, std::make_shared<const FullField>(f));
+  const std::array<Vec3, 2> points = {Vec3(0, 0, f.z_bottom_m - 5.0), Vec3(0, 0, 97.1)};
+  std::array<Vec3, 2> v;
+  field.velocities_profile_below(points, 0.37, v);
+  CHECK(v[0].x() == Approx(10.0 * std::pow(points[0].z() / 92.0, 0.2)).epsilon(1e-14));
+  CHECK((v[1] - field.velocity(points[1], 0.37)).norm() == 0.0);
+  CHECK(field.outside_queries() == 0);
+  const std::array<Vec3, 1> beside = {Vec3(0, 40.0, 90.0)};
+  std::array<Vec3, 1> w;
+  field.velocities_profile_below(beside, 0.37, w);
+  CHECK(field.outside_queries() == 1);
 }

@@ -85,6 +85,7 @@ struct Params {
 
   TowerPotential tower_potential = TowerPotential::none;
   TowerShadow tower_shadow = TowerShadow::none;
+  bool tower_drag = false;                  // aerodynamic drag on the tower (AeroDyn TwrAero; tower_drag.hpp)
   std::vector<TowerNodeParams> tower;       // ≥ 2 stations when a tower model is on
 
   std::vector<int> output_nodes;            // 1-based node numbers of the B<b>N<k>… channels (≤ 9)

@@ -37,6 +37,9 @@ class WindField {
   Vec3 velocity(const Vec3& p_m, double time_s) const;
   // Same for many points; out.size() must equal points.size().
   void velocities(std::span<const Vec3> points_m, double time_s, std::span<Vec3> out_m_s) const;
+  // As velocities(), for points that lie below a full field by design (the tower's foot when the
+  // field has no tower column): they take the mean profile without being counted as outside.
+  void velocities_profile_below(std::span<const Vec3> points_m, double time_s, std::span<Vec3> out_m_s) const;
 
   const WindParams& params() const { return params_; }
   const FullField* full_field() const { return field_.get(); }
@@ -48,6 +51,7 @@ class WindField {
   std::shared_ptr<const FullField> field_;
   Mat3 wind_to_inertial_;  // R above
   Vec3 reference_point_m_; // (0, 0, z_ref): pivot of the box rotation
+  Vec3 velocity_at(const Vec3& p_m, double time_s, bool count_below) const;
   mutable long outside_queries_ = 0;  // a diagnostic count: the velocity itself stays a pure function
 };
 

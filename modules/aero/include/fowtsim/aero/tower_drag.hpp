@@ -1,0 +1,32 @@
+#pragma once
+// Aerodynamic drag on the tower (AeroDyn's TwrAero): each tower station (Params::tower) carries a
+// load per unit length
+//     f = ½ ρ C_d D |v⊥| v⊥,   v⊥ = (u − ẋ) − ((u − ẋ)·k) k,
+// with u the undisturbed wind at the station, ẋ the station's velocity, k the unit tower axis, D
+// and C_d the station's diameter and drag coefficient — the steady drag of a circular cylinder in
+// the flow normal to its axis (Morison's drag term without the inertia term: air is light). The
+// load is taken linear between stations and integrated exactly (the trapezoid rule), as the
+// blades' loads are (aero.hpp); it is zero below the first and above the last station.
+#include <span>
+
+#include "fowtsim/aero/params.hpp"
+#include "fowtsim/core/types.hpp"
+
+namespace fowtsim::aero {
+
+struct TowerDragLoad {
+  Vec3 force_N = Vec3::Zero();      // resultant, g [N]
+  Vec3 moment_N_m = Vec3::Zero();   // about the point asked for, g [N·m]
+};
+
+// Positions of the tower stations: tower_base_m + elevation · tower_axis (both in g), into `out`
+// (one per station).
+void tower_station_positions(const Params& params, const Vec3& tower_base_m, const Vec3& tower_axis,
+                             std::span<Vec3> out);
+
+// The drag resultant on the tower with stations at `position_m` moving at `velocity_m_s` in the
+// wind `inflow_m_s` (one each per station, g), moment about `about_m`. Allocates nothing.
+TowerDragLoad tower_drag(const Params& params, const Vec3& tower_axis, std::span<const Vec3> position_m,
+                         std::span<const Vec3> velocity_m_s, std::span<const Vec3> inflow_m_s, const Vec3& about_m);
+
+}  // namespace fowtsim::aero
