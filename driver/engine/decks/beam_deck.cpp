@@ -35,7 +35,7 @@ const DeckSection<BeamDefinitionKeys>& definition_section() {
     b.custom("beamdyn_file", Schema::string().optional()
                                  .doc("a BeamDyn primary input file (relative to this deck): its key points, twist and element "
                                       "order, and the blade file it names (stations, damping), instead of the four keys below"),
-             [](const io::ValidatedDeck& d, const std::string& key, BeamDefinitionKeys& k) { k.beamdyn_file = beside_deck(d, key); })
+             [](const io::ValidatedDeck& d, const std::string& key, BeamDefinitionKeys& k) { k.beamdyn_file = file_beside_deck(d, key); })
         .key("key_points_m", Schema::sequence(number_vector(3, "x, y, z")).min_items(2).optional()
                                  .doc("reference line through these points, root first, z increasing"),
              &BeamDefinitionKeys::key_points_m)
