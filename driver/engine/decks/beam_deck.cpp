@@ -134,6 +134,15 @@ beam::BeamDefinition beam_definition(const io::ValidatedDeck& deck, const std::s
       keys.beamdyn_file ? beamdyn_file_definition(deck, path, keys) : own_definition(deck, path, keys);
   if (keys.damping_mu_s) definition.stiffness_damping = *keys.damping_mu_s;
   definition.mass_damping_1_s = keys.mass_damping_1_s;
+  // The beam module's own checks (finite properties, mass per length and damping ≥ 0) now, at the
+  // key the value came from ("beam.stations[2].mass", else the beam's section), rather than when the
+  // beam is discretised with no location. A BeamDyn file's stations were checked as it was read.
+  try {
+    beam::validate(definition);
+  } catch (const InputError& e) {
+    const std::string key = path + "." + e.context().variable;
+    throw InputError(e.context(), where(deck, deck.has(key) ? key : path) + ": " + e.message());
+  }
   return definition;
 }
 
