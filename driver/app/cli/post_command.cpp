@@ -18,6 +18,7 @@
 #include "fowtsim/io/readers.hpp"
 #include "fowtsim/io/suggest.hpp"
 #include "fowtsim/post/damage_equivalent_load.hpp"
+#include "fowtsim/post/record_checks.hpp"
 
 extern char** environ;
 
@@ -97,6 +98,7 @@ void Analysis::file(const std::filesystem::path& path) {
   io::ChannelTable table = io::read_channels(path);
   for (const std::string& warning : io::reading_warnings(table, name)) fmt::print(stderr, "warning: {}\n", warning);
   if (fatigue) add_calculated(table, fatigue->calculated, name);
+  post::check_time_order(table.time(), name);
   const post::RowRange rows = post::rows_in_window(table.time(), options.window);
   const std::span<const double> time = rows_of(table.time(), rows);
   const double duration_s = time.back() - time.front();
@@ -111,6 +113,7 @@ void Analysis::file(const std::filesystem::path& path) {
   std::size_t series_stored = 0;
   for (const std::size_t c : columns) {
     const std::span<const double> values = rows_of(table.columns[c], rows);
+    post::check_no_nan(time, values, rows.first, name, table.names[c]);
     PostRow row{name, table.names[c], table.units[c], post::channel_statistics(time, values), duration_s, std::nullopt};
     if (const std::optional<post::FatigueParams> params = fatigue ? fatigue->params_for(table.names[c]) : std::nullopt) {
       const std::vector<post::RainflowCycle> cycles = post::rainflow_cycles(values, options.residue);

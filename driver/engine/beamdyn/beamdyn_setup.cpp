@@ -94,6 +94,16 @@ beam::BeamDefinition beamdyn_definition(const io::BeamDynPrimary& primary, const
   for (const io::BeamDynStation& st : blade.stations) d.stations.push_back({st.eta, st.stiffness, st.mass});
   if (blade.damp_type == 2) unsupported(blade.file, "damp_type", "modal damping (2) is not supported; use 0 or 1");
   if (blade.damp_type == 1) d.stiffness_damping = blade.mu;
+  // The beam module's checks now, naming the blade file and its station (BeamDyn numbers from 1),
+  // not later when the beam is discretised.
+  try {
+    beam::validate(d);
+  } catch (const InputError& e) {
+    const std::string& variable = e.context().variable;
+    const std::string station =
+        variable.starts_with("stations[") ? fmt::format(" station {}:", std::stoi(variable.substr(9)) + 1) : std::string();
+    throw InputError(e.context(), fmt::format("{}:{} {}", blade.file.string(), station, e.message()));
+  }
   return d;
 }
 

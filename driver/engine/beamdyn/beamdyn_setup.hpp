@@ -39,7 +39,8 @@ struct BeamDynSetup {
 BeamDynSetup beamdyn_setup(const io::BeamDynCase& bd);
 
 // The beam of a BeamDyn primary file and its blade file: reference line, sections, stiffness-
-// proportional damping (damp_type 1; modal damping 2 is refused).
+// proportional damping (damp_type 1; modal damping 2 is refused). Checked by beam::validate: a
+// problem names the blade file and station.
 beam::BeamDefinition beamdyn_definition(const io::BeamDynPrimary& primary, const io::BeamDynBlade& blade);
 
 // BeamDyn's reference line through key points (z increasing): per coordinate and for the twist a

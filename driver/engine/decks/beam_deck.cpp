@@ -35,7 +35,7 @@ const DeckSection<BeamDefinitionKeys>& definition_section() {
     b.custom("beamdyn_file", Schema::string().optional()
                                  .doc("a BeamDyn primary input file (relative to this deck): its key points, twist and element "
                                       "order, and the blade file it names (stations, damping), instead of the four keys below"),
-             [](const io::ValidatedDeck& d, const std::string& key, BeamDefinitionKeys& k) { k.beamdyn_file = beside_deck(d, key); })
+             [](const io::ValidatedDeck& d, const std::string& key, BeamDefinitionKeys& k) { k.beamdyn_file = file_beside_deck(d, key); })
         .key("key_points_m", Schema::sequence(number_vector(3, "x, y, z")).min_items(2).optional()
                                  .doc("reference line through these points, root first, z increasing"),
              &BeamDefinitionKeys::key_points_m)
@@ -134,6 +134,15 @@ beam::BeamDefinition beam_definition(const io::ValidatedDeck& deck, const std::s
       keys.beamdyn_file ? beamdyn_file_definition(deck, path, keys) : own_definition(deck, path, keys);
   if (keys.damping_mu_s) definition.stiffness_damping = *keys.damping_mu_s;
   definition.mass_damping_1_s = keys.mass_damping_1_s;
+  // The beam module's own checks (finite properties, mass per length and damping ≥ 0) now, at the
+  // key the value came from ("beam.stations[2].mass", else the beam's section), rather than when the
+  // beam is discretised with no location. A BeamDyn file's stations were checked as it was read.
+  try {
+    beam::validate(definition);
+  } catch (const InputError& e) {
+    const std::string key = path + "." + e.context().variable;
+    throw InputError(e.context(), where(deck, deck.has(key) ? key : path) + ": " + e.message());
+  }
   return definition;
 }
 

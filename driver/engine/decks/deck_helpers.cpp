@@ -35,6 +35,18 @@ std::filesystem::path beside_deck(const io::ValidatedDeck& deck, const std::stri
   return file.is_absolute() ? file : std::filesystem::path(deck.location(key).file).parent_path() / file;
 }
 
+std::filesystem::path file_beside_deck(const io::ValidatedDeck& deck, const std::string& key) {
+  const std::filesystem::path file = beside_deck(deck, key);
+  std::error_code error;
+  const std::filesystem::file_type type = std::filesystem::status(file, error).type();
+  if (type == std::filesystem::file_type::regular) return file;
+  const char* found = type == std::filesystem::file_type::directory   ? "is a directory, not a file"
+                      : type == std::filesystem::file_type::not_found ? "does not exist"
+                                                                      : "is not a regular file";
+  throw InputError({"deck", std::nullopt, key, "a file (relative paths are taken from the deck file's directory)"},
+                   fmt::format("{}: {} {}", where(deck, key), file.string(), found));
+}
+
 std::string where(const io::ValidatedDeck& deck, const std::string& path) {
   const io::SourceLocation loc = deck.location(path);
   const std::string full = deck.path().empty() ? path : deck.path() + "." + path;

@@ -23,6 +23,9 @@ Mat6 mat6(const io::ValidatedDeck& deck, const std::string& path);
 // The file a string key names: a relative path is taken from the directory of the deck file that
 // holds the key (decks include one another).
 std::filesystem::path beside_deck(const io::ValidatedDeck& deck, const std::string& key);
+// The same for a key that names a file to read: a directory or a missing path stops at the key's
+// file:line ("… is a directory, not a file"), not later as an unreadable or empty file.
+std::filesystem::path file_beside_deck(const io::ValidatedDeck& deck, const std::string& key);
 
 // "file:line:col: path" of a value in the deck.
 std::string where(const io::ValidatedDeck& deck, const std::string& path);

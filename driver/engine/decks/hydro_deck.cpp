@@ -151,7 +151,10 @@ void add_potential_flow(const io::ValidatedDeck& f, const PotentialFlowKeys& key
                                                options);
     pf.excitation = keys.excitation;
     p.potential_flow = std::move(pf);
-    if (keys.excitation) deck.excitation = io::read_wamit_excitation(with_extension(".3"), scales);
+    if (keys.excitation) {
+      deck.excitation = io::read_wamit_excitation(with_extension(".3"), scales);
+      io::check_same_frequencies(radiation, with_extension(".1"), *deck.excitation, with_extension(".3"));
+    }
     if (p.hydrostatics == hydro::Hydrostatics::linear)
       p.hydrostatic_stiffness = io::read_wamit_hydrostatics(with_extension(".hst"), scales);
   } catch (const InputError& e) {

@@ -63,6 +63,32 @@ const DeckSection<MooringParams>& mooring_section() {
 
 Schema mooring_schema() { return mooring_section().schema(); }
 
+void check_mooring_at_initial_pose(const io::ValidatedDeck& deck, const mooring::MooringParams& mooring,
+                                   const FrameMotion& initial_pose) {
+  // Chain and wire rope break at a few per cent of strain, fibre ropes below 30 %: a line this much
+  // longer than its unstretched length at the start is a wrong initial position or anchor.
+  constexpr double kMaxStrain = 0.3;
+  const std::string position_key = "structure.initial_conditions.platform_position_m";
+  const auto refuse = [&](const std::string& line_key, const std::string& message) {
+    const std::string key = deck.has(position_key) ? position_key : line_key;
+    throw InputError({"mooring", std::nullopt, key, ""}, where(deck, key) + ": " + message);
+  };
+  if (!(initial_pose.position_m.z() > -mooring.depth_m))
+    refuse("mooring.depth_m", fmt::format("the platform starts at z = {:g} m, at or below the seabed (mooring.depth_m {:g} m)",
+                                          initial_pose.position_m.z(), mooring.depth_m));
+  for (std::size_t i = 0; i < mooring.lines.size(); ++i) {
+    const mooring::LineParams& line = mooring.lines[i];
+    const Vec3 fairlead = initial_pose.position_m + initial_pose.orientation * line.fairlead_body_m;
+    const double span_m = (fairlead - line.anchor_m).norm();
+    if (span_m > (1.0 + kMaxStrain) * line.unstretched_length_m)
+      refuse(fmt::format("mooring.lines[{}]", i),
+             fmt::format("line {} spans {:.1f} m from anchor to fairlead at the initial pose, {:.0f} % more than its unstretched "
+                         "length {:g} m (no line material stretches beyond {:.0f} %): check the initial position and the anchors",
+                         i + 1, span_m, 100.0 * (span_m / line.unstretched_length_m - 1.0), line.unstretched_length_m,
+                         100.0 * kMaxStrain));
+  }
+}
+
 mooring::MooringParams mooring_params(const io::ValidatedDeck& d) {
   mooring::MooringParams p = mooring_section().read(d);
   located(d, [&] { mooring::validate(p); });

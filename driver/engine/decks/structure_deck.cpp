@@ -1,5 +1,10 @@
 #include "decks/structure_deck.hpp"
 
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
 #include "decks/deck_helpers.hpp"
 #include "decks/deck_section.hpp"
 #include "fowtsim/core/error.hpp"
@@ -13,6 +18,24 @@ namespace {
 Schema non_negative(const char* doc) { return Schema::number().at_least(0.0).doc(doc); }
 Schema any_number(const char* doc) { return Schema::number().doc(doc); }
 Schema zero_default(const char* doc) { return Schema::number().default_value(0.0).doc(doc); }
+
+// Initial conditions are checked for sense, so that a slip (1e19 for 1.9) stops at its line as an
+// input error instead of failing the run at t = 0 in some module. The bounds are wide, each with
+// its reason; tighter ones that need another key are checked in check_initial_conditions.
+constexpr double kMaxOffsetM = 1000.0;        // beyond any mooring footprint (OC3's anchors lie 853.87 m out)
+constexpr double kMaxHeaveM = 100.0;          // floating platforms heave metres; 100 m lifts most of a spar out
+                                              // of the water (OC3: 120 m draft) or sinks a semi-submersible
+constexpr double kMaxTiltDeg = 90.0;          // rolled or pitched by 90° a platform lies on its side (and
+                                              // Euler 1-2-3 is singular at a pitch of 90°)
+constexpr double kMaxSpeedM_s = 50.0;         // 5× a 50-year sea's orbital velocity at the surface
+constexpr double kMaxRateDeg_s = 180.0;       // half a turn a second: 10× any platform's rate in storms
+constexpr double kMaxRotorRpm = 100.0;        // multi-megawatt rotors turn at 5–20 rpm
+constexpr double kSpeedOfSoundM_s = 343.0;    // a blade tip beyond it is no wind turbine (tips run at ≤ 100 m/s)
+
+Schema bounded_vector(double bound, const char* doc) {
+  return Schema::sequence(Schema::number().at_least(-bound).at_most(bound)).min_items(3).max_items(3).doc(doc);
+}
+Schema bounded(double low, double high, const char* doc) { return Schema::number().at_least(low).at_most(high).default_value(0.0).doc(doc); }
 
 // Each key once: name, schema and the Params field it fills (decks/deck_section.hpp).
 const DeckSection<multibody::Params>& structure_section() {
@@ -71,18 +94,25 @@ const DeckSection<multibody::Params>& structure_section() {
         .key("torsional_damping_N_m_s_rad", Schema::number().at_least(0.0).default_value(0.0).doc("DTTorDmp"),
              &DrivetrainParams::torsional_damping_N_m_s_rad);
     DeckSection<InitialConditions> initial;
-    initial.key("platform_position_m", number_vector(3, "PtfmSurge, PtfmSway, PtfmHeave").optional(),
+    initial.key("platform_position_m", bounded_vector(kMaxOffsetM, "PtfmSurge, PtfmSway, PtfmHeave; each within ±1000 m (beyond "
+                                                                   "any mooring footprint), the heave within ±100 m").optional(),
                 &InitialConditions::platform_position_m)
-        .key("platform_angles_deg", number_vector(3, "PtfmRoll, PtfmPitch, PtfmYaw (Euler 1-2-3)").optional(),
+        .key("platform_angles_deg", bounded_vector(180.0, "PtfmRoll, PtfmPitch, PtfmYaw (Euler 1-2-3); roll and pitch within "
+                                                          "±90° (beyond, the platform lies on its side)").optional(),
              &InitialConditions::platform_angles_deg)
-        .key("platform_velocity_m_s", number_vector(3, "reference-point velocity, inertial").optional(),
+        .key("platform_velocity_m_s", bounded_vector(kMaxSpeedM_s, "reference-point velocity, inertial (±50 m/s: 5× a "
+                                                                   "50-year sea's orbital velocity)").optional(),
              &InitialConditions::platform_velocity_m_s)
-        .key("platform_angular_velocity_deg_s", number_vector(3, "angular velocity, body frame").optional(),
+        .key("platform_angular_velocity_deg_s", bounded_vector(kMaxRateDeg_s, "angular velocity, body frame (±180°/s: 10× "
+                                                                              "any platform's rate in storms)").optional(),
              &InitialConditions::platform_angular_velocity_deg_s)
-        .key("azimuth_deg", zero_default("Azimuth"), &InitialConditions::azimuth_deg)
-        .key("rotor_speed_rpm", zero_default("RotSpeed"), &InitialConditions::rotor_speed_rpm)
-        .key("nacelle_yaw_deg", zero_default("NacYaw"), &InitialConditions::nacelle_yaw_deg)
-        .key("blade_pitch_deg", zero_default("BlPitch: initial pitch of every blade (held until the controller's first call)"),
+        .key("azimuth_deg", bounded(-360.0, 360.0, "Azimuth (one turn either way: it wraps)"), &InitialConditions::azimuth_deg)
+        .key("rotor_speed_rpm", bounded(-kMaxRotorRpm, kMaxRotorRpm, "RotSpeed (multi-megawatt rotors turn at 5–20 rpm; "
+                                                                     "the blade tip must stay below the speed of sound)"),
+             &InitialConditions::rotor_speed_rpm)
+        .key("nacelle_yaw_deg", bounded(-180.0, 180.0, "NacYaw (half a turn either way)"), &InitialConditions::nacelle_yaw_deg)
+        .key("blade_pitch_deg", bounded(-90.0, 90.0, "BlPitch: initial pitch of every blade, held until the controller's "
+                                                     "first call (90° is feathered; beyond, the blade faces backwards)"),
              &InitialConditions::blade_pitch_deg);
     auto free_dof = [](const char* doc) { return Schema::boolean().default_value(true).doc(doc); };
     auto platform_dof = [](int i) { return [i](DofSwitches& f) -> bool& { return f.platform_free[i]; }; };
@@ -110,12 +140,39 @@ const DeckSection<multibody::Params>& structure_section() {
   return section;
 }
 
+// The bounds of one component of a vector key, or of two keys together, that the schema cannot say.
+void check_initial_conditions(const io::ValidatedDeck& d, const multibody::Params& p) {
+  const multibody::InitialConditions& ic = p.initial_conditions;
+  const auto refuse = [&](const std::string& key, const std::string& message) {
+    throw InputError({"structure", std::nullopt, key, ""}, where(d, key) + ": " + message);
+  };
+  if (std::abs(ic.platform_position_m.z()) > kMaxHeaveM)
+    refuse("initial_conditions.platform_position_m",
+           fmt::format("heave {:g} m: expected within ±{:g} m (a platform heaves metres; 100 m lifts a spar mostly out of the "
+                       "water or sinks a semi-submersible)",
+                       ic.platform_position_m.z(), kMaxHeaveM));
+  for (int k : {0, 1})
+    if (!(std::abs(ic.platform_angles_deg[k]) < kMaxTiltDeg))
+      refuse("initial_conditions.platform_angles_deg",
+             fmt::format("{} {:g}°: expected within ±{:g}° (beyond, the platform lies on its side; Euler 1-2-3 is singular at a "
+                         "pitch of 90°)",
+                         k == 0 ? "roll" : "pitch", ic.platform_angles_deg[k], kMaxTiltDeg));
+  const double tip_speed_m_s = std::abs(ic.rotor_speed_rpm) * 2.0 * std::numbers::pi / 60.0 * p.rotor.tip_radius_m;
+  if (tip_speed_m_s >= kSpeedOfSoundM_s)
+    refuse("initial_conditions.rotor_speed_rpm",
+           fmt::format("{:g} rpm turns the {:g}-m blade tip at {:.0f} m/s: expected below the speed of sound ({:g} m/s; wind "
+                       "turbine tips run at ≤ 100 m/s)",
+                       ic.rotor_speed_rpm, p.rotor.tip_radius_m, tip_speed_m_s, kSpeedOfSoundM_s));
+}
+
 }  // namespace
 
 Schema structure_schema() { return structure_section().schema(); }
 
 multibody::Params structure_params(const io::ValidatedDeck& d) {
-  return structure_section().read(d);
+  multibody::Params p = structure_section().read(d);
+  check_initial_conditions(d, p);
+  return p;
 }
 
 }  // namespace fowtsim::driver

@@ -79,10 +79,16 @@ waves::ElevationRecord read_two_columns(const std::filesystem::path& path) {
   waves::ElevationRecord r;
   r.source = path.string();
   const std::string text = read_text(path);
+  // A last line without a line end was cut, perhaps inside its last number: refused there.
+  const std::size_t unterminated_line =
+      text.empty() || text.back() == '\n' ? 0 : static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
   for_each_line(text, [&](std::string_view line, std::size_t number) {
     line = line.substr(0, line.find('#'));
     const std::vector<std::string_view> fields = tokens(line);
     if (fields.empty()) return true;
+    if (number == unterminated_line)
+      bad_record(fmt::format("{}:{}", r.source, number),
+                 "the file ends inside this line, without a line end: cut short? (its last number may be incomplete)");
     if (fields.size() != 2)
       bad_record(fmt::format("{}:{}", r.source, number),
                  fmt::format("expected two numbers (time s, elevation m), found {} fields", fields.size()));
@@ -177,8 +183,9 @@ const DeckSection<waves::WaveParams>& waves_section() {
                                  "with the record length N·dt (duration_s and dt_s are not used)"),
                 [](const io::ValidatedDeck& d, const std::string& key, WaveParams& p) {
                   if (p.model != waves::WaveModel::elevation_series) return;
-                  p.elevation_record = located(
-                      d, [&] { return std::make_shared<const waves::ElevationRecord>(read_elevation_record(beside_deck(d, key))); });
+                  const std::filesystem::path file = file_beside_deck(d, key);
+                  p.elevation_record =
+                      located(d, [&] { return std::make_shared<const waves::ElevationRecord>(read_elevation_record(file)); });
                 })
         .key("hs_m", Schema::number().at_least(0.0).default_value(0.0).doc("significant wave height Hs = 4√m0 (irregular)"),
              &WaveParams::hs_m)

@@ -46,7 +46,10 @@ const DeckSection<WindParams>& wind_section() {
              &WindParams::direction_deg)
         .key("upflow_deg", Schema::number().at_least(-45.0).at_most(45.0).default_value(0.0).doc("upflow angle"), &WindParams::upflow_deg)
         .custom("file", Schema::string().optional().doc("TurbSim .bts file (model bts), relative to this deck"),
-                [](const io::ValidatedDeck& d, const std::string& key, WindParams& p) { p.file = beside_deck(d, key).string(); })
+                [](const io::ValidatedDeck& d, const std::string& key, WindParams& p) {
+                  // `model` is declared above, so read first: only model bts reads the file.
+                  p.file = (p.model == wind::WindModel::bts ? file_beside_deck(d, key) : beside_deck(d, key)).string();
+                })
         .key("probe_point_m", number_vector(3, "point of Wind1VelX/Y/Z, inertial").optional(), &WindParams::probe_point_m)
         .section("turbulence", t, &WindParams::turbulence, true, "generator settings (model turbulent)");
     return w;

@@ -23,7 +23,10 @@ SeaModules::SeaModules(const io::ValidatedDeck& deck, const FrameMotion& initial
     hydro_ = std::move(h.params);
     excitation_table = std::move(h.excitation);
   }
-  if (deck.has("mooring")) mooring_ = mooring_params(deck.section("mooring"));
+  if (deck.has("mooring")) {
+    mooring_ = mooring_params(deck.section("mooring"));
+    check_mooring_at_initial_pose(deck, *mooring_, initial_pose);
+  }
   if (hydro_) {
     initial_.hydro_input = hydro::make_input(*hydro_);
     initial_.hydro_input.platform = initial_pose;

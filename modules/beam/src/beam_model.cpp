@@ -28,8 +28,9 @@ Mat6 interpolate_station(const BeamDefinition& def, double eta, Get get) {
   return (1.0 - w) * get(*lo) + w * get(*hi);
 }
 
-void check_definition(const BeamDefinition& def, int segments) {
-  if (segments < 1) fail("segments", "need at least one segment, got " + std::to_string(segments));
+}  // namespace
+
+void validate(const BeamDefinition& def) {
   if (def.stations.size() < 1) fail("stations", "need at least one station");
   for (std::size_t i = 0; i < def.stations.size(); ++i) {
     const Station& s = def.stations[i];
@@ -43,6 +44,8 @@ void check_definition(const BeamDefinition& def, int segments) {
   if ((def.stiffness_damping.array() < 0.0).any() || def.mass_damping_1_s < 0.0)
     fail("damping", "damping coefficients must be ≥ 0");
 }
+
+namespace {
 
 // Segment inertia about its node, in the node's local frame: 4 sub-intervals × 3-point Gauss
 // (exact for cubic variation per sub-interval; property tables vary linearly between stations).
@@ -90,7 +93,8 @@ Mat6 mass_at(const BeamDefinition& def, double eta) {
 }
 
 BeamModel discretise(const BeamDefinition& def, int segments) {
-  check_definition(def, segments);
+  if (segments < 1) fail("segments", "need at least one segment, got " + std::to_string(segments));
+  validate(def);
   BeamModel model;
   const double length = def.line.length_m();
   const double ds = length / segments;

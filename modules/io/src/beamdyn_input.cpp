@@ -107,6 +107,7 @@ struct Line {
   int number = 0;                   // 1-based line number in the file
   std::vector<std::string> fields;  // list-directed fields (split_fields)
   bool comment = false;             // a section or comment line: "---…" or "===…"
+  bool unterminated = false;        // the file's last line, without a line end: cut short
 
   bool blank() const { return fields.empty(); }
   bool starts_with_number() const {
@@ -149,8 +150,10 @@ class InputFile {
       const std::size_t end = std::min(rest.find('\n'), rest.size());
       std::string_view text = rest.substr(0, end);
       if (!text.empty() && text.back() == '\r') text.remove_suffix(1);  // CRLF files
+      const bool unterminated = end == rest.size();
       rest.remove_prefix(std::min(end + 1, rest.size()));
       lines_.push_back(make_line(text, static_cast<int>(lines_.size()) + 1));
+      lines_.back().unterminated = unterminated;
       if (lines_.size() == 2) title_ = trim(text);
     }
   }
@@ -209,9 +212,17 @@ const Line& Entry::line() const { return file_->line(index_); }
 
 void Entry::fail(const std::string& message) const { file_->fail(&line(), key_, message); }
 
+// A number read from a last line without a line end may be cut ("7.0" of "7.000000E-01"): every
+// tool that writes these files ends each line, so such a file was cut short and is refused.
+void check_terminated(const InputFile& file, const Line& line, std::string_view what) {
+  if (line.unterminated)
+    file.fail(&line, what, "the file ends inside this line, without a line end: cut short? (its last number may be incomplete)");
+}
+
 // Value checks shared by named lines and table rows: `what` names the value in messages.
 double to_real(const InputFile& file, const Line& line, std::string_view what,
                const std::string& field) {
+  check_terminated(file, line, what);
   const auto value = parse_real(field);
   if (!value) file.fail(&line, what, fmt::format("expected a number, got \"{}\"", field));
   return *value;
@@ -219,6 +230,7 @@ double to_real(const InputFile& file, const Line& line, std::string_view what,
 
 int to_integer(const InputFile& file, const Line& line, std::string_view what,
                const std::string& field, int min, int max) {
+  check_terminated(file, line, what);
   const auto value = parse_integer(field);
   if (!value || *value < min || *value > max) {
     const std::string range =
@@ -268,13 +280,14 @@ Eigen::Matrix<double, N, 1> indexed_reals(const InputFile& file, std::string_vie
   return values;
 }
 
-// A file named by `entry`, relative to the directory of the file holding it; it must exist.
+// A file named by `entry`, relative to the directory of the file holding it; it must exist and be a
+// file, not a directory.
 std::filesystem::path referenced_file(const InputFile& file, const Entry& entry) {
   std::filesystem::path path = entry.text();
   if (path.is_relative()) path = file.path().parent_path() / path;
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    entry.fail(fmt::format("file \"{}\" not found (looked for {})", entry.text(), path.string()));
+  if (const std::string reason = detail::not_a_file_reason(path); !reason.empty()) {
+    entry.fail(fmt::format("file \"{}\" {} (looked for {})", entry.text(), reason == "no such file" ? "not found" : reason,
+                           path.string()));
   }
   return path;
 }
@@ -312,13 +325,13 @@ class TableCursor {
     do {
       if (++index_ >= file_.size()) {
         file_.fail(&file_.line(file_.size() - 1), what,
-                   fmt::format("expected {} numbers, reached the end of the file", count));
+                   fmt::format("expected {} number{}, reached the end of the file", count, count == 1 ? "" : "s"));
       }
     } while (file_.line(index_).comment || file_.line(index_).blank());
     const Line& line = file_.line(index_);
     if (line.fields.size() < count) {
       file_.fail(&line, what,
-                 fmt::format("expected {} numbers, found {} field{}", count, line.fields.size(),
+                 fmt::format("expected {} number{}, found {} field{}", count, count == 1 ? "" : "s", line.fields.size(),
                              line.fields.size() == 1 ? "" : "s"));
     }
     return line;
@@ -533,6 +546,11 @@ BeamDynBlade parse_blade(const InputFile& file) {
     const BeamDynStation* previous = blade.stations.empty() ? nullptr : &blade.stations.back();
     blade.stations.push_back(read_station(file, stations, s, previous));
   }
+  // The stations end the file: more rows mean station_total and the table disagree.
+  for (std::size_t i = stations.index() + 1; i < file.size(); ++i)
+    if (!file.line(i).comment && !file.line(i).blank())
+      file.fail(&file.line(i), "station_total",
+                fmt::format("expected the end of the file after station {} (station_total), found more rows", blade.station_total));
   return blade;
 }
 

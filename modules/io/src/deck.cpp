@@ -149,14 +149,25 @@ class Loader {
     }
     const std::string* bytes = bytes_of(file, identity);
     if (bytes == nullptr) {
+      std::error_code error;
+      const bool directory = fs::is_directory(file, error);
       add({DeckIssueKind::file_unreadable, included_at, include_path,
-           file.string() + " (no such file, or not readable)", "a readable file",
+           file.string() + (directory ? " (it is a directory, not a file)" : " (no such file, or not readable)"), "a readable file",
            include_path.empty() ? "" : "include paths are relative to the including file"});
       return std::nullopt;
     }
     YAML::Node yaml;
     try {
-      yaml = YAML::Load(*bytes);
+      // A deck is one YAML document: a second one (after "---") would be silently ignored by
+      // YAML::Load, valid or not, so it is refused where it starts.
+      const std::vector<YAML::Node> documents = YAML::LoadAll(*bytes);
+      if (documents.size() > 1) {
+        add({DeckIssueKind::yaml_syntax, second_document_start(*bytes, file), "",
+             fmt::format("{} YAML documents (separated by ---) in one deck file", documents.size()), "one document",
+             "put the keys of every document into one, or into files joined by include"});
+        return std::nullopt;
+      }
+      if (!documents.empty()) yaml = documents.front();
     } catch (const YAML::Exception& error) {
       add({DeckIssueKind::yaml_syntax,
            {file.string(), error.mark.line + 1, error.mark.column + 1},
@@ -273,6 +284,25 @@ class Loader {
       }
       merge_into(target, std::move(*root));
     }
+  }
+
+  // Where the second document of a multi-document file starts: the line of its "---" marker (a
+  // document may also open with one), else the file's first line.
+  static SourceLocation second_document_start(const std::string& bytes, const fs::path& file) {
+    int markers = 0, line = 1;
+    bool content_before = false;  // a first document without a leading "---"
+    for (std::size_t pos = 0; pos < bytes.size(); ++line) {
+      const std::size_t end = std::min(bytes.find('\n', pos), bytes.size());
+      const std::string_view text(bytes.data() + pos, end - pos);
+      pos = end + 1;
+      if (text.starts_with("---") && (text.size() == 3 || text[3] == ' ' || text[3] == '\t' || text[3] == '\r')) {
+        if (++markers == (content_before ? 1 : 2)) return {file.string(), line, 1};
+      } else if (markers == 0 && !text.empty() && text.front() != '#' && text.find_first_not_of(" \t\r") != std::string_view::npos &&
+                 text.front() != '%') {
+        content_before = true;
+      }
+    }
+    return {file.string(), 1, 1};
   }
 
   // yaml-cpp marks are 0-based; ours are 1-based.

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "file_bytes.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "hdf5_check.hpp"
@@ -89,10 +90,8 @@ std::vector<double> read_column(hid_t dataset, const std::string& name, const st
 
 ChannelTable read_hdf5_channels(const std::filesystem::path& path) {
   const std::string name = path.string();
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    throw InputError(ErrorContext{"io.hdf5", std::nullopt, name, "check the path"},
-                     fmt::format("'{}' is not a readable file", name));
+  if (const std::string reason = detail::not_a_file_reason(path); !reason.empty()) {
+    throw InputError(ErrorContext{"io.hdf5", std::nullopt, name, "check the path"}, fmt::format("'{}' {}", name, reason));
   }
   hdf5::silence_error_printing();
   const hid_t file_id = H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);

@@ -131,6 +131,8 @@ class Lines {
   }
   std::size_t number() const { return number_; }      // 1-based number of the last line returned
   std::size_t remaining_bytes() const { return pos_ < text_.size() ? text_.size() - pos_ : 0; }
+  // The line last read was the file's last and had no line end.
+  bool unterminated() const { return pos_ > text_.size(); }
 
  private:
   std::string_view text_;
@@ -236,6 +238,11 @@ ChannelTable read_openfast_text(const std::filesystem::path& path) {
     if (column != channel_count && cut_short(fmt::format("{} of {} values", column, channel_count))) break;
     if (column != channel_count) {
       fail(lines.number(), fmt::format("{} values on the row, expected {}", column, channel_count));
+    }
+    // OpenFAST and our writer end every row: a last row without a line end was cut, perhaps inside
+    // its last number, which would still read ("0.12" of "0.1234E+01").
+    if (lines.unterminated()) {
+      fail(lines.number(), "the file ends inside this row, without a line end: cut short? (its last number may be incomplete)");
     }
     if (!reserved) {
       // Rows have nearly equal length: one reservation from the first avoids regrowth.

@@ -522,3 +522,31 @@ TEST_CASE("BeamDyn reader: a missing file is reported where it is named", "[unit
 
   CHECK_THAT(error_of(dir / "absent.inp"), Catch::Contains("absent.inp"));
 }
+
+TEST_CASE("BeamDyn reader: a blade file cut short or with more stations than declared is refused", "[unit]") {
+  // Intent: the stations table is checked for completeness. A file cut inside its last number
+  // ("1.500000E-05" cut to "1.50") still parses; only the missing line end tells, so a last line
+  // without one is refused at that line. Rows after the declared station_total stations mean the
+  // count and the table disagree.
+  const auto dir = fowtsim::testing::scratch_dir("beamdyn_truncated");
+  const std::string blade = blade_text();
+  const std::string cut = blade.substr(0, blade.size() - 9);
+  CHECK_THAT(error_of(write_synthetic_case(dir / "cut", kDriver, kPrimary, cut)),
+             Catch::Contains("props.inp:" + std::to_string(std::count(blade.begin(), blade.end(), '\n')) +
+                             ": station 2 mass row 6: the file ends inside this line, without a line end"));
+  // The same without its final line end only: still refused (the last number could be cut).
+  CHECK_THAT(error_of(write_synthetic_case(dir / "no_line_end", kDriver, kPrimary, blade.substr(0, blade.size() - 1))),
+             Catch::Contains("station 2 mass row 6: the file ends inside this line"));
+  const std::string one_station = replaced(blade, "2                       station_total", "1                       station_total");
+  CHECK_THAT(error_of(write_synthetic_case(dir / "extra", kDriver, kPrimary, one_station)),
+             Catch::Contains("props.inp:" + std::to_string(line_of(blade, "\n 1.0\n") + 1) +
+                             ": station_total: expected the end of the file after station 1 (station_total), found more rows"));
+}
+
+TEST_CASE("BeamDyn reader: a directory named where a file belongs is called a directory", "[unit]") {
+  const auto dir = fowtsim::testing::scratch_dir("beamdyn_directory");
+  const auto driver = write_synthetic_case(dir, kDriver, kPrimary, blade_text());
+  fs::remove(dir / "props.inp");
+  fs::create_directories(dir / "props.inp");
+  CHECK_THAT(error_of(driver), Catch::Contains("BldFile: file \"../props.inp\" is a directory, not a file"));
+}

@@ -210,6 +210,33 @@ rotor:
                              (dir / "hub.yaml").string()));
 }
 
+TEST_CASE("a directory named as an include is reported as a directory at the include", "[unit][deck]") {
+  // Intent: "no such file" would send the user looking for a missing file that is there as a folder.
+  const auto dir = fowtsim::testing::scratch_dir("deck_include_directory");
+  std::filesystem::create_directories(dir / "hub.yaml");
+  write(dir / "scene.yaml", "include: [hub.yaml]\n");
+  const auto error = load_error([&] { load_deck(dir / "scene.yaml"); });
+  REQUIRE(error.issues.size() == 1);
+  CHECK_THAT(error.message, Catch::Contains((dir / "scene.yaml").string() + ":1:11: include[0]: cannot open") &&
+                                Catch::Contains("hub.yaml (it is a directory, not a file)"));
+}
+
+TEST_CASE("a deck file holding two YAML documents is refused where the second starts", "[unit][deck]") {
+  // Intent: YAML::Load keeps the first document and drops the rest unread, valid or not; a deck
+  // is one document, so a second one is an error at its "---" line (with or without a leading one).
+  const auto dir = fowtsim::testing::scratch_dir("deck_two_documents");
+  write(dir / "two.yaml", "a: 1\n---\nb: {c: -5, bogus: 1}\n");
+  auto error = load_error([&] { load_deck(dir / "two.yaml"); });
+  REQUIRE(error.issues.size() == 1);
+  CHECK_THAT(error.message, Catch::Contains((dir / "two.yaml").string() + ":2:1: invalid YAML: 2 YAML documents"));
+  write(dir / "marked.yaml", "# a comment\n---\na: 1\n---\n");
+  error = load_error([&] { load_deck(dir / "marked.yaml"); });
+  CHECK_THAT(error.message, Catch::Contains((dir / "marked.yaml").string() + ":4:1: invalid YAML: 2 YAML documents"));
+  // One document, explicitly opened and closed, is a deck.
+  write(dir / "one.yaml", "---\na: 1\n...\n");
+  CHECK(load_deck(dir / "one.yaml").root.find("a") != nullptr);
+}
+
 TEST_CASE("a missing deck file is reported", "[unit][deck]") {
   // Intent: a wrong path on the command line gives a DeckError, not a crash or an empty deck.
   const auto dir = fowtsim::testing::scratch_dir("deck_missing");

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/wamit_input.hpp"
 #include "fowtsim/testing/skip.hpp"
@@ -72,4 +74,87 @@ TEST_CASE("a malformed WAMIT line is refused with its file and line", "[unit][io
   CHECK_THROWS_WITH(read_wamit_hydrostatics(dir / "bad.hst", kOc3), Catch::Contains("bad.hst:1") && Catch::Contains("abc"));
   std::ofstream(dir / "short.1") << "10.0 1 1 1.0\n";
   CHECK_THROWS_WITH(read_wamit_radiation(dir / "short.1", kOc3), Catch::Contains("short.1:1") && Catch::Contains("5 fields"));
+}
+
+namespace {
+
+// A small complete .1 file: the two limits and two periods, each with the pairs (1, 1), (3, 3), (1, 5).
+const char* kSmallRadiation =
+    "-1 1 1 1.0\n-1 3 3 2.0\n-1 1 5 3.0\n"
+    " 0 1 1 1.1\n 0 3 3 2.1\n 0 1 5 3.1\n"
+    "10 1 1 1.2 0.1\n10 3 3 2.2 0.2\n10 1 5 3.2 0.3\n"
+    " 5 1 1 1.3 0.4\n 5 3 3 2.3 0.5\n 5 1 5 3.3 0.6\n";
+
+// A .3 file of two periods × two headings, modes 1 and 3.
+const char* kSmallExcitation =
+    "10 0 1 1 0 1 0\n10 0 3 1 0 1 0\n10 90 1 1 0 1 0\n10 90 3 1 0 1 0\n"
+    " 5 0 1 1 0 1 0\n 5 0 3 1 0 1 0\n 5 90 1 1 0 1 0\n 5 90 3 1 0 1 0\n";
+
+std::filesystem::path write(const std::filesystem::path& dir, const char* name, const std::string& text) {
+  std::ofstream(dir / name, std::ios::binary) << text;
+  return dir / name;
+}
+
+}  // namespace
+
+TEST_CASE("a WAMIT file cut inside its last number is refused: its last line has no line end", "[unit][io]") {
+  // "3.3 0.6" cut to "3.3 0." reads as numbers; only the missing line end tells.
+  const auto dir = testing::scratch_dir("wamit_cut_number");
+  const std::string whole = kSmallRadiation;
+  REQUIRE_NOTHROW(read_wamit_radiation(write(dir, "whole.1", whole), kOc3));
+  CHECK_THROWS_WITH(read_wamit_radiation(write(dir, "cut.1", whole.substr(0, whole.size() - 2)), kOc3),
+                    Catch::Contains("cut.1:12") && Catch::Contains("without a line end"));
+  const std::string x = kSmallExcitation;
+  CHECK_THROWS_WITH(read_wamit_excitation(write(dir, "cut.3", x.substr(0, x.size() - 1)), kOc3),
+                    Catch::Contains("cut.3:8") && Catch::Contains("without a line end"));
+  // Trailing blank lines after a complete last line, and CRLF line ends, are no truncation.
+  REQUIRE_NOTHROW(read_wamit_radiation(write(dir, "blank_tail.1", whole + "\n  "), kOc3));
+  std::string crlf;
+  for (char c : whole) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  REQUIRE_NOTHROW(read_wamit_radiation(write(dir, "crlf.1", crlf), kOc3));
+}
+
+TEST_CASE("a WAMIT .1 period missing pairs the others have is refused with the pairs and its line", "[unit][io]") {
+  const auto dir = testing::scratch_dir("wamit_cut_block");
+  // Cut at a line end inside the last period: (1, 5) of period 5 s is missing.
+  const std::string whole = kSmallRadiation;
+  const std::string cut = whole.substr(0, whole.rfind(" 5 1 5"));
+  CHECK_THROWS_WITH(read_wamit_radiation(write(dir, "cut.1", cut), kOc3),
+                    Catch::Contains("cut.1:11") && Catch::Contains("period 5 s holds 2 entries") && Catch::Contains("missing (1, 5)"));
+  // The same (period, i, j) twice is refused, naming the first.
+  CHECK_THROWS_WITH(read_wamit_radiation(write(dir, "twice.1", whole + "5 1 1 9.9 0.1\n"), kOc3),
+                    Catch::Contains("twice.1:13") && Catch::Contains("(1, 1) of period 5 s again (first on line 10)"));
+}
+
+TEST_CASE("a WAMIT .3 period and heading missing modes, or a .hst without all 36 entries, is refused", "[unit][io]") {
+  const auto dir = testing::scratch_dir("wamit_cut_excitation");
+  const std::string x = kSmallExcitation;
+  const std::string cut = x.substr(0, x.rfind(" 5 90 3"));
+  CHECK_THROWS_WITH(read_wamit_excitation(write(dir, "cut.3", cut), kOc3),
+                    Catch::Contains("cut.3:7") && Catch::Contains("heading 90° holds 1 entries") && Catch::Contains("missing mode 3"));
+  std::string hst;
+  for (int i = 1; i <= 6; ++i)
+    for (int j = 1; j <= 6; ++j) hst += fmt::format("{} {} {}\n", i, j, i == j ? 1.0 : 0.0);
+  REQUIRE_NOTHROW(read_wamit_hydrostatics(write(dir, "whole.hst", hst), kOc3));
+  CHECK_THROWS_WITH(read_wamit_hydrostatics(write(dir, "cut.hst", hst.substr(0, hst.find("6 1 "))), kOc3),
+                    Catch::Contains("cut.hst:30") && Catch::Contains("30 of the 36 entries"));
+}
+
+TEST_CASE("WAMIT .1 and .3 files cut at a period boundary are complete alone; their periods differ", "[unit][io]") {
+  const auto dir = testing::scratch_dir("wamit_periods");
+  const std::string x = kSmallExcitation;
+  const WamitRadiation r = read_wamit_radiation(write(dir, "run.1", kSmallRadiation), kOc3);
+  const WamitExcitation whole = read_wamit_excitation(write(dir, "run.3", x), kOc3);
+  REQUIRE_NOTHROW(check_same_frequencies(r, dir / "run.1", whole, dir / "run.3"));
+  // The .3 file without its second period (all its headings): complete in itself.
+  const WamitExcitation cut = read_wamit_excitation(write(dir, "cut.3", x.substr(0, x.find(" 5 0 1"))), kOc3);
+  CHECK_THROWS_WITH(check_same_frequencies(r, dir / "run.1", cut, dir / "cut.3"),
+                    Catch::Contains("run.1") && Catch::Contains("cut.3") && Catch::Contains("run.1: 2 from") &&
+                        Catch::Contains("cut.3: 1 from"));
+}
+
+TEST_CASE("a directory where a WAMIT file belongs is named as a directory", "[unit][io]") {
+  const auto dir = testing::scratch_dir("wamit_directory");
+  std::filesystem::create_directories(dir / "Spar.1");
+  CHECK_THROWS_WITH(read_wamit_radiation(dir / "Spar.1", kOc3), Catch::Contains("Spar.1' is a directory"));
 }

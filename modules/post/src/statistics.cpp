@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -35,6 +36,13 @@ ChannelStatistics channel_statistics(std::span<const double> time_s, std::span<c
                             time_s.size(), values.size()));
   ChannelStatistics s;
   s.samples = values.size();
+  // A NaN poisons every statistic: reported as NaN, never as a plausible number (min/max comparisons
+  // skip NaN, and a NaN variance would otherwise leave skewness and kurtosis at 0).
+  if (std::any_of(values.begin(), values.end(), [](double v) { return std::isnan(v); })) {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    s.min = s.max = s.mean = s.std = s.skewness = s.kurtosis = s.time_of_min_s = s.time_of_max_s = nan;
+    return s;
+  }
   const auto [min_it, max_it] = std::minmax_element(values.begin(), values.end());
   s.min = *min_it;
   s.max = *max_it;

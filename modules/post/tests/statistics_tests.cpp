@@ -1,11 +1,13 @@
 // Statistics of a channel against closed forms.
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/post/record_checks.hpp"
 #include "fowtsim/post/statistics.hpp"
 
 using namespace fowtsim::post;
@@ -84,4 +86,25 @@ TEST_CASE("a window keeps the rows between its ends, inclusive", "[unit]") {
   CHECK((slack.first == 1 && slack.last == 5));
   CHECK_THROWS_AS(rows_in_window(t, TimeWindow{3.0, 4.0}), fowtsim::InputError);
   CHECK_THROWS_AS(rows_in_window(t, TimeWindow{0.6, 0.9}), fowtsim::InputError);
+}
+
+TEST_CASE("a channel holding NaN has NaN statistics, not a plausible skewness of 0", "[unit][post]") {
+  // Intent: min/max comparisons skip NaN and a NaN variance left skewness and kurtosis at 0.
+  const std::vector<double> t{0.0, 0.1, 0.2, 0.3};
+  const std::vector<double> v{1.0, 2.0, std::numeric_limits<double>::quiet_NaN(), 1.0};
+  const ChannelStatistics s = channel_statistics(t, v);
+  CHECK(s.samples == 4);
+  for (double x : {s.min, s.max, s.mean, s.std, s.skewness, s.kurtosis, s.time_of_min_s, s.time_of_max_s}) CHECK(std::isnan(x));
+}
+
+TEST_CASE("a record whose time goes backwards, or a channel with NaN, is refused with its row and time", "[unit][post]") {
+  const std::vector<double> t{0.0, 0.1, 0.05, 0.3};
+  CHECK_THROWS_WITH(check_time_order(t, "run.out"),
+                    Catch::Contains("run.out: time goes backwards at data row 3: 0.05 s after 0.1 s"));
+  CHECK_NOTHROW(check_time_order(std::vector<double>{0.0, 0.1, 0.1, 0.2}, "run.out"));  // repeats are not disorder
+  const std::vector<double> times{1.0, 1.1, 1.2}, values{1.0, std::numeric_limits<double>::quiet_NaN(), 2.0};
+  // The window starts at data row 11: the NaN is row 12, at t = 1.1 s.
+  CHECK_THROWS_WITH(check_no_nan(times, values, 10, "run.out", "TwrBsMyt"),
+                    Catch::Contains("run.out: channel TwrBsMyt is NaN from data row 12 (t = 1.1 s)"));
+  CHECK_NOTHROW(check_no_nan(times, std::vector<double>{1.0, 2.0, 3.0}, 0, "run.out", "TwrBsMyt"));
 }

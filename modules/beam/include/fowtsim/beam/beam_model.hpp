@@ -79,6 +79,11 @@ struct BeamModel {
 Mat6 stiffness_at(const BeamDefinition& def, double eta);
 Mat6 mass_at(const BeamDefinition& def, double eta);
 
+// Throws InputError when the definition is unusable: no station, eta not increasing, a property
+// not finite, a negative mass per length or damping. The variable names the station
+// ("stations[2].mass"), so a reader can point at where it came from.
+void validate(const BeamDefinition& def);
+
 // Discretise into `segments` equal-length finite volumes. Inertia per segment is integrated with
 // Gauss quadrature over the segment (the segment's own length contributes its rod inertia, as the
 // seed's control-volume inertia I^n does). Throws InputError on a bad definition.

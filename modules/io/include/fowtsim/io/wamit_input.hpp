@@ -46,10 +46,16 @@ struct WamitExcitation {
 };
 
 // Each reader throws InputError (module "io.wamit") naming file and line for a malformed line, a
-// mode outside 1–6 or a non-positive scale, and for a .1/.3 file whose frequencies do not form a
-// complete table.
+// mode outside 1–6 or a non-positive scale, a last line without a line end (cut short), and for a
+// table that is not complete: a .1 period or a .3 period and heading without the entries the first
+// one has, a .3 heading without the frequencies of the first, a .hst without all 36 entries.
 WamitRadiation read_wamit_radiation(const std::filesystem::path& wamit_1, const WamitScales& scales);
 WamitExcitation read_wamit_excitation(const std::filesystem::path& wamit_3, const WamitScales& scales);
 Mat6 read_wamit_hydrostatics(const std::filesystem::path& wamit_hst, const WamitScales& scales);
+
+// The .1 and .3 files of one WAMIT run hold the same periods; a file cut at the end of a period
+// block is complete in itself, and only this comparison finds it. Throws InputError naming both.
+void check_same_frequencies(const WamitRadiation& radiation, const std::filesystem::path& wamit_1,
+                            const WamitExcitation& excitation, const std::filesystem::path& wamit_3);
 
 }  // namespace fowtsim::io

@@ -39,7 +39,8 @@ struct ChannelStatistics {
 };
 
 // Statistics of `values` sampled at `time_s` (same length, at least one sample). Two passes (mean,
-// then central moments) so a large mean does not swamp the variance of a small oscillation.
+// then central moments) so a large mean does not swamp the variance of a small oscillation. A
+// channel holding a NaN gets NaN for every statistic (samples still counted).
 ChannelStatistics channel_statistics(std::span<const double> time_s, std::span<const double> values);
 
 }  // namespace fowtsim::post
