@@ -197,20 +197,18 @@ ChannelTable read_openfast_text(const std::filesystem::path& path) {
   const std::size_t channel_count = table.names.size();
   table.columns.resize(channel_count);
   bool reserved = false;
-  // The file's last line without its newline is a row cut short when it does not read whole
-  // (the writer died mid-row): it is dropped with a warning rather than failing the whole file.
-  const bool unterminated = !text.empty() && text.back() != '\n';
-  auto cut_short = [&](const std::string& what) {
-    if (!unterminated || lines.remaining_bytes() > 0) return false;
-    table.warnings.push_back(fmt::format("{}:{}: the last row is cut short ({}): dropped", name, lines.number(), what));
-    for (auto& values : table.columns) values.resize(table.columns.back().size());
-    return true;
-  };
   while (lines.next(line)) {
+    // OpenFAST and our writer end every row: a last row without a line end was cut by a writer that
+    // died mid-row, perhaps inside its last number (which would still read: "0.12" of
+    // "0.1234E+01"). It is dropped with a warning; every whole row before it is read.
+    if (lines.unterminated() && !trim(line).empty()) {
+      table.warnings.push_back(
+          fmt::format("{}:{}: the last row is cut short (no line end; the writer stopped mid-row): dropped", name, lines.number()));
+      break;
+    }
     const char* p = line.data();
     const char* const end = p + line.size();
     std::size_t column = 0;
-    bool dropped = false;
     while (true) {
       while (p != end && is_blank(*p)) ++p;
       if (p == end) break;
@@ -222,10 +220,6 @@ ChannelTable read_openfast_text(const std::filesystem::path& path) {
       }
       double value = 0.0;
       if (!parse_number(token, value)) {
-        if (cut_short(fmt::format("'{}' in channel {}", token, table.names[column]))) {
-          dropped = true;
-          break;
-        }
         fail(lines.number(), fmt::format("cannot read '{}' as a number (channel {})", token,
                                          table.names[column]));
       }
@@ -233,16 +227,9 @@ ChannelTable read_openfast_text(const std::filesystem::path& path) {
       ++column;
       p = token_end;
     }
-    if (dropped) break;
     if (column == 0) continue;  // blank line (trailing blank lines are common)
-    if (column != channel_count && cut_short(fmt::format("{} of {} values", column, channel_count))) break;
     if (column != channel_count) {
       fail(lines.number(), fmt::format("{} values on the row, expected {}", column, channel_count));
-    }
-    // OpenFAST and our writer end every row: a last row without a line end was cut, perhaps inside
-    // its last number, which would still read ("0.12" of "0.1234E+01").
-    if (lines.unterminated()) {
-      fail(lines.number(), "the file ends inside this row, without a line end: cut short? (its last number may be incomplete)");
     }
     if (!reserved) {
       // Rows have nearly equal length: one reservation from the first avoids regrowth.
