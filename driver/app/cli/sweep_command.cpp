@@ -184,11 +184,12 @@ int run_sweep_command(const SweepRequest& request, std::FILE* out) {
   SweepSpec spec = read_sweep_spec(request.spec);
   if (request.output_dir) spec.output_dir = *request.output_dir;
   const std::vector<SweepCase> cases = expand_cases(spec, read_base_deck_facts(spec.base_deck));
+  const SweepLayout layout{spec.output_dir};
   if (request.action == SweepRequest::Action::list) {
+    check_case_decks(spec, cases, layout);  // a case `fowtsim run` would reject shows here, not after hours of others
     print_cases(out, spec, cases);
     return 0;
   }
-  const SweepLayout layout{spec.output_dir};
   layout.create_directories();
   const std::vector<std::string> hashes = write_case_decks(spec, cases, layout);
   switch (request.action) {
