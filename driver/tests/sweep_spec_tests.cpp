@@ -2,6 +2,7 @@
 // preset and for crossed and zipped specs; bad specs stop with file:line errors.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <numbers>
 #include <set>
@@ -140,8 +141,28 @@ load_cases:
   CHECK_FALSE(cases[0].wind_seed);  // steady wind: only the sea is random
   CHECK(cases[0].wave_seed);
   CHECK(override_of(cases[0], "structure.degrees_of_freedom.rotor_speed") == "held");
-  CHECK(override_of(cases[0], "structure.initial_conditions.blade_pitch_deg") == "90");
-  CHECK(override_of(cases[0], "controller.min_pitch_rad") == fmt::format("{}", std::numbers::pi / 2));
+  // Feathered at the base deck's own upper pitch limit (OC3: 1.570796 rad, 90°), which the baseline
+  // controller's lower limit is raised to: the case stays inside the limits `fowtsim run` checks.
+  CHECK(override_of(cases[0], "structure.initial_conditions.blade_pitch_deg") == fmt::format("{}", 1.570796 * 180.0 / std::numbers::pi));
+  CHECK(override_of(cases[0], "controller.min_pitch_rad") == "1.570796");
+}
+
+TEST_CASE("sweep presets: DLC 6.1 feathers at the deck's own pitch limit and leaves a DISCON controller alone", "[unit][sweep]") {
+  // Intent: the parked preset takes its feather angle from the base deck's controller, and sets no
+  // controller key for a DISCON controller (it is parked by its own input file).
+  BaseDeckFacts base;
+  base.controller = {"baseline", 1.5};
+  const TurbineClass turbine{};
+  const auto keys = preset_deck_keys("dlc6.1", turbine, base.controller);
+  const auto value = [&](const std::vector<std::pair<std::string, std::string>>& k, const std::string& key) {
+    const auto it = std::find_if(k.begin(), k.end(), [&](const auto& kv) { return kv.first == key; });
+    return it == k.end() ? std::string("(unset)") : it->second;
+  };
+  CHECK(value(keys, "controller.min_pitch_rad") == "1.5");
+  CHECK(value(keys, "structure.initial_conditions.blade_pitch_deg") == fmt::format("{}", 1.5 * 180.0 / std::numbers::pi));
+  const auto discon = preset_deck_keys("dlc6.1", turbine, {"discon", 1.5});
+  CHECK(value(discon, "controller.min_pitch_rad") == "(unset)");
+  CHECK(value(discon, "structure.degrees_of_freedom.rotor_speed") == "held");
 }
 
 TEST_CASE("sweep specs: crossed factors give every combination, zipped ones pair values index by index", "[unit][sweep]") {

@@ -11,6 +11,7 @@
 #include "sweep/case_expansion.hpp"
 #include "sweep/case_files.hpp"
 #include "sweep/case_outcome.hpp"
+#include "sweep/folder_lock.hpp"
 #include "sweep/iec_presets.hpp"
 #include "sweep/load_table.hpp"
 #include "sweep/local_pool.hpp"
@@ -62,6 +63,27 @@ const char* case_end_word(int exit_code) {
   return "FAILED ";
 }
 
+const char* action_name(SweepRequest::Action action) {
+  switch (action) {
+    case SweepRequest::Action::run_local: return "local pool";
+    case SweepRequest::Action::list: return "list";
+    case SweepRequest::Action::slurm: return "Slurm submission";
+    case SweepRequest::Action::collect: return "collect";
+  }
+  return "?";
+}
+
+// Removes the temporary outputs (CASE.running.h5, .running.out) that local runs killed outright left
+// in cases/: under the folder lock no local case is running (each holds the lock while it lives),
+// and the cases about to run would write over them anyway. Not for --slurm: a Slurm task does not
+// hold the lock and may still be writing its temporary. Returns how many were removed.
+std::size_t remove_dead_temporaries(const SweepLayout& layout) {
+  std::size_t removed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(layout.root / "cases"))
+    if (entry.path().stem().extension() == ".running" && std::filesystem::remove(entry.path())) ++removed;
+  return removed;
+}
+
 // Cases whose output is not `completed` for their current deck.
 std::vector<std::size_t> cases_to_run(const std::vector<SweepCase>& cases, const std::vector<std::string>& hashes,
                                       const SweepLayout& layout) {
@@ -95,12 +117,14 @@ int finish_with_table(std::FILE* out, const SweepSpec& spec, const std::vector<S
 }
 
 int run_local(std::FILE* out, const SweepRequest& request, const SweepSpec& spec, const std::vector<SweepCase>& cases,
-              const std::vector<std::string>& hashes, const SweepLayout& layout) {
+              const std::vector<std::string>& hashes, const SweepLayout& layout, int lock_descriptor) {
   const std::vector<std::size_t> pending = cases_to_run(cases, hashes, layout);
   const double case_length_s = spec.transient_s + spec.analysis_s;
   fmt::print(out, "── fowtsim sweep {} ─────────────────────────────────\n", spec.name);
   fmt::print(out, "  cases            {} ({} completed earlier and skipped), {} to run in {} processes\n", cases.size(),
              cases.size() - pending.size(), pending.size(), request.jobs);
+  if (const std::size_t removed = remove_dead_temporaries(layout))
+    fmt::print(out, "  cleaned          {} temporary output(s) of runs killed earlier\n", removed);
   std::vector<CaseCommand> commands;
   for (const std::size_t i : pending) {
     const std::string& name = cases[i].name;
@@ -130,7 +154,8 @@ int run_local(std::FILE* out, const SweepRequest& request, const SweepSpec& spec
         else if (!p.last_case.empty())
           fmt::print(out, "  {} {} (exit {}): {}\n", case_end_word(p.last_exit_code), p.last_case, p.last_exit_code, line);
         std::fflush(out);
-      });
+      },
+      lock_descriptor);
   if (terminal) fmt::print(out, "\n");
   if (report.interrupted_by)
     fmt::print(out, "  interrupted      by {}: finished cases are kept, the others run on the next `fowtsim sweep`\n",
@@ -184,11 +209,14 @@ int run_sweep_command(const SweepRequest& request, std::FILE* out) {
   SweepSpec spec = read_sweep_spec(request.spec);
   if (request.output_dir) spec.output_dir = *request.output_dir;
   const std::vector<SweepCase> cases = expand_cases(spec, read_base_deck_facts(spec.base_deck));
+  const SweepLayout layout{spec.output_dir};
   if (request.action == SweepRequest::Action::list) {
+    check_case_decks(spec, cases, layout);  // a case `fowtsim run` would reject shows here, not after hours of others
     print_cases(out, spec, cases);
     return 0;
   }
-  const SweepLayout layout{spec.output_dir};
+  // One sweep per folder, before any file in it changes (folder_lock.hpp).
+  const SweepFolderLock lock(layout.root, fmt::format("fowtsim sweep {} ({})", request.spec.string(), action_name(request.action)), out);
   layout.create_directories();
   const std::vector<std::string> hashes = write_case_decks(spec, cases, layout);
   switch (request.action) {
@@ -196,7 +224,7 @@ int run_sweep_command(const SweepRequest& request, std::FILE* out) {
       fmt::print(out, "── fowtsim sweep {} (collect) ───────────────────────\n", spec.name);
       return finish_with_table(out, spec, cases, hashes, layout);
     case SweepRequest::Action::slurm: return run_slurm(out, request, spec, cases, hashes, layout);
-    case SweepRequest::Action::run_local: return run_local(out, request, spec, cases, hashes, layout);
+    case SweepRequest::Action::run_local: return run_local(out, request, spec, cases, hashes, layout, lock.descriptor());
     case SweepRequest::Action::list: break;
   }
   return 0;

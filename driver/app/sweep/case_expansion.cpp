@@ -133,6 +133,12 @@ BaseDeckFacts read_base_deck_facts(const std::filesystem::path& base_deck) {
     const io::DeckNode* model = waves->find("model");
     facts.wave_model = model ? model->scalar : "still";  // the waves schema's default
   }
+  if (const io::DeckNode* controller = loaded.root.find("controller")) {
+    const io::DeckNode* type = controller->find("type");
+    facts.controller.type = type ? type->scalar : "baseline";  // the controller schema's default
+    if (const io::DeckNode* max = controller->find("max_pitch_rad"))
+      facts.controller.max_pitch_rad = parse_number(max->scalar).value_or(facts.controller.max_pitch_rad);
+  }
   return facts;
 }
 
@@ -153,7 +159,7 @@ std::vector<SweepCase> expand_cases(const SweepSpec& spec, const BaseDeckFacts& 
         c.fatigue = g.fatigue;
         CaseBuilder deck(c);
         deck.set("simulation.t_max_s", number_text(total_s));
-        for (const auto& [key, value] : preset_deck_keys(g.preset, spec.turbine)) deck.set(key, value, g.location);
+        for (const auto& [key, value] : preset_deck_keys(g.preset, spec.turbine, base.controller)) deck.set(key, value, g.location);
 
         std::string name = g.name;
         std::string canonical = spec.name + "|" + g.name;

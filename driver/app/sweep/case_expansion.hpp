@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fowtsim/io/deck.hpp"
+#include "sweep/iec_presets.hpp"
 #include "sweep/sweep_spec.hpp"
 
 namespace fowtsim::driver::sweep {
@@ -38,6 +39,7 @@ struct BaseDeckFacts {
   std::string wind_model;                 // wind.model ("" without a wind section)
   std::optional<double> wind_speed_m_s;   // wind.speed_m_s
   std::string wave_model;                 // waves.model ("" without a waves section)
+  BaseController controller;              // its type and pitch limit (the parked preset)
 };
 BaseDeckFacts read_base_deck_facts(const std::filesystem::path& base_deck);
 

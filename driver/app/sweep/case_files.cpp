@@ -6,13 +6,12 @@
 #include <iterator>
 #include <optional>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
-#include "scenes/beam_scene.hpp"
-#include "scenes/floating_scene.hpp"
-#include "scenes/platform_scene.hpp"
-#include "scenes/toy_scene.hpp"
+#include "run/validate_deck.hpp"
 
 namespace fowtsim::driver::sweep {
 
@@ -68,13 +67,6 @@ void emit(const KeyTree& node, int depth, std::string& out) {
   }
 }
 
-io::Schema schema_of_scene(const io::DeckNode& root) {
-  if (root.find("structure")) return floating_scene_schema();
-  if (root.find("platform_motion")) return platform_scene_schema();
-  if (root.find("beam")) return beam_scene_schema();
-  return toy_scene_schema();
-}
-
 // A problem in a key the case deck sets is reported where the spec sets it (if it does), naming the case.
 io::DeckIssue relocate(io::DeckIssue issue, const SweepCase& c) {
   for (auto it = c.overrides.rbegin(); it != c.overrides.rend(); ++it) {
@@ -118,35 +110,80 @@ std::string case_deck_text(const SweepSpec& spec, const SweepCase& c, const fs::
   return text;
 }
 
-std::vector<std::string> write_case_decks(const SweepSpec& spec, const std::vector<SweepCase>& cases, const SweepLayout& layout) {
-  fs::create_directories(layout.root / "decks");
+namespace {
+
+// Writes each case deck into `deck_dir` (an unchanged one is left alone: a Slurm task may be reading
+// it while --collect runs) and checks it as `fowtsim run` would (validate_scene_deck). Problems are
+// reported at `shown_dir`, where the sweep keeps the decks (the same text line for line), each
+// naming its case; a key the spec sets is reported at its spec line. Every case's problems together.
+std::vector<std::string> write_and_check(const SweepSpec& spec, const std::vector<SweepCase>& cases, const fs::path& deck_dir,
+                                         const fs::path& shown_dir) {
+  fs::create_directories(deck_dir);
   std::vector<std::string> hashes;
   std::vector<io::DeckIssue> issues;
+  std::vector<std::pair<std::string, std::vector<std::string>>> rule_errors;  // message, its cases
   for (const SweepCase& c : cases) {
-    const fs::path path = layout.deck(c.name);
+    const fs::path path = deck_dir / (c.name + ".yaml"), shown = shown_dir / (c.name + ".yaml");
     const std::string text = case_deck_text(spec, c, path.parent_path());
-    // An unchanged deck is left alone: a Slurm task may be reading it while --collect runs.
     if (std::ifstream in(path, std::ios::binary); !in || std::string(std::istreambuf_iterator<char>(in), {}) != text) {
       std::ofstream out(path, std::ios::binary | std::ios::trunc);
       out << text;
       if (!out) throw InputError({"sweep", std::nullopt, "output_dir", "a writable folder"}, "cannot write " + path.string());
     }
     try {
-      io::LoadedDeck loaded = io::load_deck(path);
-      hashes.push_back(loaded.hash);
-      const io::Schema schema = schema_of_scene(loaded.root);
-      io::validate(schema, std::move(loaded));
+      hashes.push_back(validate_scene_deck(path));
     } catch (const io::DeckError& e) {
       // A problem of the base deck itself is the same in every case: reported once.
       for (const io::DeckIssue& issue : e.issues()) {
-        io::DeckIssue located = issue.location.file == path.string() ? relocate(issue, c) : issue;
+        io::DeckIssue located = issue;
+        if (issue.location.file == path.string()) {
+          located.location.file = shown.string();
+          located = relocate(located, c);
+        }
         if (std::none_of(issues.begin(), issues.end(), [&](const io::DeckIssue& i) { return i.to_string() == located.to_string(); }))
           issues.push_back(std::move(located));
       }
+    } catch (const InputError& e) {
+      // A rule across keys the scene applies (e.g. pitch limits): its message names the deck by
+      // file:line and the keys concerned.
+      std::string message = e.what();
+      for (std::size_t at = message.find(path.string()); at != std::string::npos;
+           at = message.find(path.string(), at + shown.string().size()))
+        message.replace(at, path.string().size(), shown.string());
+      for (std::size_t at = message.find('\n'); at != std::string::npos; at = message.find('\n', at + 1)) message.insert(at + 1, "    ");
+      const auto same = std::find_if(rule_errors.begin(), rule_errors.end(), [&](const auto& r) { return r.first == message; });
+      if (same == rule_errors.end()) rule_errors.push_back({message, {c.name}});
+      else same->second.push_back(c.name);
     }
   }
-  if (!issues.empty()) throw io::DeckError(std::move(issues));
-  return hashes;
+  if (rule_errors.empty() && !issues.empty()) throw io::DeckError(std::move(issues));
+  if (rule_errors.empty()) return hashes;
+  std::string lines = "case decks that `fowtsim run` would reject:";
+  for (const io::DeckIssue& issue : issues) lines += "\n  " + issue.to_string();
+  for (const auto& [message, names] : rule_errors) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    lines += fmt::format("\n  case{} {}: {}", names.size() > 1 ? "s" : "", list, message);
+  }
+  throw InputError({"sweep", std::nullopt, "case decks", "fix the keys named, in the spec or its base deck"}, lines);
+}
+
+}  // namespace
+
+std::vector<std::string> write_case_decks(const SweepSpec& spec, const std::vector<SweepCase>& cases, const SweepLayout& layout) {
+  return write_and_check(spec, cases, layout.root / "decks", layout.root / "decks");
+}
+
+void check_case_decks(const SweepSpec& spec, const std::vector<SweepCase>& cases, const SweepLayout& layout) {
+  const fs::path scratch = fs::temp_directory_path() / fmt::format("fowtsim-sweep-check-{}", ::getpid());
+  struct Removed {
+    fs::path dir;
+    ~Removed() {
+      std::error_code ignored;
+      fs::remove_all(dir, ignored);
+    }
+  } removed{scratch};
+  write_and_check(spec, cases, scratch, layout.root / "decks");
 }
 
 void write_exit_code(const SweepLayout& layout, const std::string& case_name, int exit_code) {

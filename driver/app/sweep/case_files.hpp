@@ -34,9 +34,15 @@ struct SweepLayout {
 std::string case_deck_text(const SweepSpec& spec, const SweepCase& c, const std::filesystem::path& deck_dir);
 
 // Writes every case deck and returns their deck hashes (what `fowtsim run` records as deck_hash),
-// after validating each against its scene's schema: every problem of every case is reported
-// together, and one set by the spec is reported at its line in the spec (io::DeckError).
+// after checking each as `fowtsim run` would read it (run/validate_deck.hpp): every problem of
+// every case is reported together, naming the case; a schema problem in a key the spec sets is
+// reported at its line in the spec (io::DeckError); a rule across keys of a scene (pitch limits,
+// rotor geometry) names the case and its deck's file:line and keys (InputError).
 std::vector<std::string> write_case_decks(const SweepSpec& spec, const std::vector<SweepCase>& cases, const SweepLayout& layout);
+
+// The same check without writing into the output folder (--list): the decks go to a temporary
+// folder, removed after; problems are reported where the sweep would write them (same lines).
+void check_case_decks(const SweepSpec& spec, const std::vector<SweepCase>& cases, const SweepLayout& layout);
 
 // A case's exit code as `fowtsim run` returned it (logs/CASE.exit), written by whoever ran it.
 void write_exit_code(const SweepLayout& layout, const std::string& case_name, int exit_code);

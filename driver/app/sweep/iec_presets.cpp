@@ -31,25 +31,30 @@ std::string_view preset_sea_state_kind(const std::string& preset) {
   return "the normal sea state (NSS), E[Hs | V]";
 }
 
-std::vector<std::pair<std::string, std::string>> preset_deck_keys(const std::string& preset, const TurbineClass& turbine) {
+std::vector<std::pair<std::string, std::string>> preset_deck_keys(const std::string& preset, const TurbineClass& turbine,
+                                                                  const BaseController& controller) {
   if (preset.rfind("dlc1.", 0) == 0)
     return {{"wind.model", "turbulent"},
             {"wind.reference_height_m", fmt::format("{}", turbine.hub_height_m)},
             {"wind.turbulence.model", "NTM"},
             {"wind.turbulence.class", turbine.turbulence_class}};
-  if (preset == "dlc6.1")
-    // Parked: rotor held still, blades feathered. The baseline controller would pitch the blades
-    // back to fine pitch at zero speed, so its lower pitch limit is raised to feather too (a
-    // DISCON controller must be parked by its own input file).
-    return {{"wind.model", "power_law"},
-            {"wind.speed_m_s", fmt::format("{}", ewm50_hub_speed_m_s(turbine.wind_class))},
-            {"wind.reference_height_m", fmt::format("{}", turbine.hub_height_m)},
-            {"wind.shear_exponent", fmt::format("{}", kEwmShearExponent)},
-            {"structure.initial_conditions.rotor_speed_rpm", "0"},
-            {"structure.initial_conditions.blade_pitch_deg", "90"},
-            {"structure.degrees_of_freedom.rotor_speed", "held"},
-            {"controller.min_pitch_rad", fmt::format("{}", std::numbers::pi / 2.0)}};
-  return {};
+  if (preset != "dlc6.1") return {};
+  // Parked: rotor held still, blades feathered at the deck's own pitch limit (90° for the NREL
+  // 5MW: 1.570796 rad), so the case stays inside the limits the controller checks. The baseline
+  // controller would pitch the blades back to fine pitch at zero speed, so its lower pitch limit
+  // is raised to that feather angle too (equal limits hold the pitch there). A DISCON controller
+  // must be parked by its own input file: its limits are left alone.
+  const double feather_rad = controller.max_pitch_rad;
+  std::vector<std::pair<std::string, std::string>> keys = {
+      {"wind.model", "power_law"},
+      {"wind.speed_m_s", fmt::format("{}", ewm50_hub_speed_m_s(turbine.wind_class))},
+      {"wind.reference_height_m", fmt::format("{}", turbine.hub_height_m)},
+      {"wind.shear_exponent", fmt::format("{}", kEwmShearExponent)},
+      {"structure.initial_conditions.rotor_speed_rpm", "0"},
+      {"structure.initial_conditions.blade_pitch_deg", fmt::format("{}", feather_rad * 180.0 / std::numbers::pi)},
+      {"structure.degrees_of_freedom.rotor_speed", "held"}};
+  if (controller.type == "baseline") keys.emplace_back("controller.min_pitch_rad", fmt::format("{}", feather_rad));
+  return keys;
 }
 
 SeaState sea_state_at(const SeaStateSpec& sea, double v) {

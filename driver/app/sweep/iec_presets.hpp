@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "fowtsim/control/baseline_params.hpp"
 #include "sweep/sweep_spec.hpp"
 
 namespace fowtsim::driver::sweep {
@@ -35,8 +36,16 @@ inline const std::vector<double> kDlc61YawMisalignmentDeg = {-8.0, 0.0, 8.0};
 // The kind of sea state a preset expects, for messages.
 std::string_view preset_sea_state_kind(const std::string& preset);
 
+// The base deck's controller, as a parked preset needs it: the feathered pitch is the deck's own
+// upper pitch limit, so that the parked case decks stay inside the limits `fowtsim run` checks.
+struct BaseController {
+  std::string type;                 // controller.type ("baseline", "discon"); "" without a controller section
+  double max_pitch_rad = control::BaselineParams{}.max_pitch_rad;  // controller.max_pitch_rad (its default if unset)
+};
+
 // Deck keys a preset sets in every case (key path, YAML value), before the case's own factors.
-std::vector<std::pair<std::string, std::string>> preset_deck_keys(const std::string& preset, const TurbineClass& turbine);
+std::vector<std::pair<std::string, std::string>> preset_deck_keys(const std::string& preset, const TurbineClass& turbine,
+                                                                  const BaseController& controller);
 
 // Hs and Tp of a sea-state spec at a hub-height wind speed (kind table or relation, or fixed).
 struct SeaState {

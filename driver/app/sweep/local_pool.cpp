@@ -2,7 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,8 +15,6 @@
 
 #include "fowtsim/core/error.hpp"
 #include "run/interrupt.hpp"
-
-extern char** environ;
 
 namespace fowtsim::driver::sweep {
 
@@ -33,41 +31,74 @@ struct RunningCase {
 };
 
 // Starts one case; returns its pid, or 0 (with the reason in its log) if it could not start.
-pid_t spawn_case(const std::filesystem::path& executable, const CaseCommand& command) {
+// fork + exec rather than posix_spawn, for the parent-death signal: a case must not outlive its
+// pool (a pool killed outright would leave it running as an orphan, writing the very outputs a
+// rerun writes). Everything the child needs is prepared before the fork; the child makes only
+// async-signal-safe calls.
+pid_t spawn_case(const std::filesystem::path& executable, const CaseCommand& command, int kept_descriptor) {
   std::vector<std::string> words = {executable.string()};
   words.insert(words.end(), command.arguments.begin(), command.arguments.end());
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
 
-  posix_spawn_file_actions_t files;
-  posix_spawn_file_actions_init(&files);
-  posix_spawn_file_actions_addopen(&files, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, command.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&files, STDOUT_FILENO, STDERR_FILENO);
-
-  // Own process group: a terminal's Ctrl-C reaches the sweep only, which forwards it once (a
-  // second SIGINT would kill a run at once instead of letting it close its output). Default
-  // dispositions and an empty mask, whatever the sweep inherited (nohup, a shell's `&`).
-  posix_spawnattr_t attributes;
-  posix_spawnattr_init(&attributes);
-  sigset_t defaults, empty;
-  sigemptyset(&defaults);
-  sigaddset(&defaults, SIGINT);
-  sigaddset(&defaults, SIGTERM);
-  sigemptyset(&empty);
-  posix_spawnattr_setsigdefault(&attributes, &defaults);
-  posix_spawnattr_setsigmask(&attributes, &empty);
-  posix_spawnattr_setpgroup(&attributes, 0);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
-
-  pid_t pid = 0;
-  const int error = posix_spawn(&pid, executable.c_str(), &files, &attributes, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&files);
-  posix_spawnattr_destroy(&attributes);
-  if (error != 0) {
-    std::ofstream(command.log, std::ios::app) << "fowtsim: cannot start " << executable.string() << ": " << std::strerror(error) << "\n";
-    return 0;
+  const auto cannot_start = [&](const char* what, int error) {
+    std::ofstream(command.log, std::ios::app) << "fowtsim: cannot start " << executable.string() << ": " << what << ": "
+                                              << std::strerror(error) << "\n";
+    return pid_t{0};
+  };
+  const int log = open(command.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (log < 0) return cannot_start("its log", errno);
+  const int null_input = open("/dev/null", O_RDONLY | O_CLOEXEC);
+  int exec_error[2];  // the child reports a failed exec through it; a successful exec closes it
+  if (null_input < 0 || pipe2(exec_error, O_CLOEXEC) != 0) {
+    const int error = errno;
+    close(log);
+    if (null_input >= 0) close(null_input);
+    return cannot_start("a pipe", error);
+  }
+  const pid_t pool = getpid();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    // Own process group: a terminal's Ctrl-C reaches the sweep only, which forwards it once (a
+    // second SIGINT would kill a run at once instead of letting it close its output).
+    setpgid(0, 0);
+    // SIGTERM when the pool dies: the run closes its output as interrupted and ends. If the pool
+    // died before this call, the signal would never come: stop now.
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != pool) _exit(143);
+    // Default dispositions and an empty mask, whatever the sweep inherited (nohup, a shell's `&`).
+    struct sigaction default_action {};
+    default_action.sa_handler = SIG_DFL;
+    sigaction(SIGINT, &default_action, nullptr);
+    sigaction(SIGTERM, &default_action, nullptr);
+    sigset_t empty;
+    sigemptyset(&empty);
+    sigprocmask(SIG_SETMASK, &empty, nullptr);
+    dup2(null_input, STDIN_FILENO);
+    dup2(log, STDOUT_FILENO);
+    dup2(log, STDERR_FILENO);
+    if (kept_descriptor >= 0) fcntl(kept_descriptor, F_SETFD, 0);  // kept across exec (the folder lock)
+    execv(argv[0], argv.data());
+    const int error = errno;
+    (void)!write(exec_error[1], &error, sizeof error);
+    _exit(127);
+  }
+  const int fork_error = errno;
+  close(exec_error[1]);
+  close(log);
+  close(null_input);
+  if (pid < 0) {
+    close(exec_error[0]);
+    return cannot_start("fork", fork_error);
+  }
+  int error = 0;
+  ssize_t n;
+  while ((n = read(exec_error[0], &error, sizeof error)) < 0 && errno == EINTR) {}
+  close(exec_error[0]);
+  if (n > 0) {
+    waitpid(pid, nullptr, 0);
+    return cannot_start("exec", error);
   }
   return pid;
 }
@@ -84,7 +115,7 @@ std::filesystem::path own_executable() { return std::filesystem::read_symlink("/
 
 PoolReport run_pool(const std::filesystem::path& executable, const std::vector<CaseCommand>& commands, int jobs,
                     const std::function<void(const CaseExit&)>& on_case_end,
-                    const std::function<void(const PoolProgress&)>& progress) {
+                    const std::function<void(const PoolProgress&)>& progress, int kept_descriptor) {
   if (jobs < 1) throw std::logic_error("run_pool: jobs < 1");
   const Clock::time_point start = Clock::now();
   PoolReport report;
@@ -125,7 +156,7 @@ PoolReport run_pool(const std::filesystem::path& executable, const std::vector<C
     }
     while (!report.interrupted_by && running.size() < static_cast<std::size_t>(jobs) && next < commands.size()) {
       const std::size_t index = next++;
-      if (const pid_t pid = spawn_case(executable, commands[index]); pid > 0)
+      if (const pid_t pid = spawn_case(executable, commands[index], kept_descriptor); pid > 0)
         running.push_back({pid, index, Clock::now()});
       else
         finish(index, 127, 0.0, 0.0);  // 127: the shell's "command could not be run"

@@ -45,9 +45,12 @@ struct PoolReport {
 // called as each case ends (to record its exit code), `progress` at each end and every ~0.5 s.
 // A SIGINT/SIGTERM (run/interrupt.hpp) stops new starts and is forwarded to the running cases,
 // which close their outputs as interrupted; the pool waits for them and reports the signal.
+// Cases die with the pool: however it ends (even SIGKILL), each running case gets SIGTERM (the
+// parent-death signal) and closes its output as interrupted. `kept_descriptor` (≥ 0) stays open
+// in every case (the folder lock, folder_lock.hpp: locked until the last case has exited).
 PoolReport run_pool(const std::filesystem::path& executable, const std::vector<CaseCommand>& commands, int jobs,
                     const std::function<void(const CaseExit&)>& on_case_end,
-                    const std::function<void(const PoolProgress&)>& progress);
+                    const std::function<void(const PoolProgress&)>& progress, int kept_descriptor = -1);
 
 // This process's own executable (/proc/self/exe), what a sweep runs its cases with.
 std::filesystem::path own_executable();

@@ -10,8 +10,12 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p) {
+std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p, RotorAero::WindSetUp setup) {
   if (p.model == wind::WindModel::turbulent) {
+    if (setup == RotorAero::WindSetUp::check) {
+      wind::validate(p);  // what generate_turbulence checks of its input
+      return nullptr;
+    }
     // The scene skips the tower column `fowtsim turbulence` writes for OpenFAST (it triples the
     // generation time; the grid is the same either way): the blades stay above the grid's bottom,
     // and the tower drag takes the mean profile below it (README "Tower drag": the column moved
@@ -28,8 +32,8 @@ std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p) {
 
 }  // namespace
 
-RotorAero::RotorAero(aero::Params params, const wind::WindParams& wind, const multibody::Params& structure)
-    : params_(std::move(params)), wind_(make_wind(wind)) {
+RotorAero::RotorAero(aero::Params params, const wind::WindParams& wind, const multibody::Params& structure, WindSetUp setup)
+    : params_(std::move(params)), wind_params_(wind), wind_(make_wind(wind, setup)) {
   // ElastoDyn signs in the structure (PreCone < 0 cones upwind), the aero convention + upwind.
   hub_frame_rotor_.precone_rad = -structure.rotor.precone_deg * kDegree;
   hub_frame_rotor_.hub_radius_m = structure.rotor.hub_radius_m;

@@ -35,9 +35,16 @@ class RotorAero {
     std::vector<Vec3> points, inflow;   // workspace: node positions and their wind
   };
 
+  // What the constructor sets up of the wind: all of it for a run, or for a deck check (a sweep
+  // checks every case deck before anything runs) all but a turbulent field, whose parameters are
+  // validated but whose generation (seconds per ten-minute field) is left to the run.
+  enum class WindSetUp { run, check };
+
   // The rotor of `params` in the wind of `wind` (a turbulent field is generated here, a TurbSim
-  // file read); the rotor geometry (precone, hub radius) comes from the structure.
-  RotorAero(aero::Params params, const wind::WindParams& wind, const multibody::Params& structure);
+  // file read); the rotor geometry (precone, hub radius) comes from the structure. Set up with
+  // WindSetUp::check, a rotor in turbulent wind has no field: only params() and wind_params() serve.
+  RotorAero(aero::Params params, const wind::WindParams& wind, const multibody::Params& structure,
+            WindSetUp setup = WindSetUp::run);
   Data make_data() const;
 
   // Loads at time t on the rotor in the chain configuration `chain`, blade pitch `pitch_rad`:
@@ -81,6 +88,7 @@ class RotorAero {
   void advance_states_placed(double t, Data& d) const;
   // The wind field (for the rotor-plane probe and checks that the rotor stays inside the grid).
   const wind::WindField& wind() const { return *wind_; }
+  const wind::WindParams& wind_params() const { return wind_params_; }
   const aero::Params& params() const { return params_; }
   // Hub-height wind speed at the probe (for the controller's record 27 and the channels).
   Vec3 probe_wind(double t) const { return wind_->velocity(wind_->params().probe_point_m, t); }
@@ -90,7 +98,8 @@ class RotorAero {
 
  private:
   aero::Params params_;
-  std::shared_ptr<const wind::WindField> wind_;
+  wind::WindParams wind_params_;
+  std::shared_ptr<const wind::WindField> wind_;  // null only for a turbulent wind set up for a check
   aero::RigidRotor hub_frame_rotor_;  // the rotor placed at the origin with h = identity
   std::size_t aero_channel_count_ = 0;
 };

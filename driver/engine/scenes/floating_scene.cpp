@@ -107,7 +107,7 @@ Schema floating_scene_schema() {
   });
 }
 
-FloatingScene::FloatingScene(const io::ValidatedDeck& deck) : structure_(structure_params(deck.section("structure"))) {
+FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : structure_(structure_params(deck.section("structure"))) {
   if (deck.has("blades")) TurbineBlades::configure(structure_);
   model_ = located(deck.section("structure"), [&] { return multibody::make_model(structure_); });
   if (deck.has("aero") && (!deck.has("airfoils") || !deck.has("wind")))
@@ -119,7 +119,8 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck) : structure_(structu
   const multibody::State initial = multibody::Multibody::make_state(model_);
   sea_.emplace(deck, platform_motion(initial), simulation_keys(deck).dt_s);
   if (deck.has("aero")) {
-    rotor_.emplace(aero_params(deck), wind_params(deck.section("wind")), structure_);
+    rotor_.emplace(aero_params(deck), wind_params(deck.section("wind")), structure_,
+                   setup == SetUp::check ? RotorAero::WindSetUp::check : RotorAero::WindSetUp::run);
     // One rotor, two descriptions: the aero blade table and the structure must agree on it.
     const aero::Params& ap = rotor_->params();
     if (ap.number_of_blades != structure_.rotor.blade_count)
@@ -172,7 +173,7 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck) : structure_(structu
 
   input_warnings_ = sea_->warnings();
   if (rotor_ && rotor_->params().number_of_blades > 0) {
-    const wind::WindParams& w = rotor_->wind().params();
+    const wind::WindParams& w = rotor_->wind_params();
     // NREL 5MW cut-out 25 m/s (the controller has no shutdown): a spinning rotor above it.
     if (w.speed_m_s > 25.0 && structure_.initial_conditions.rotor_speed_rpm != 0.0)
       input_warnings_.push_back(fmt::format("wind {:.3g} m/s beyond the 25 m/s cut-out with the rotor spinning (the controller "

@@ -61,8 +61,10 @@ void fields(Archive& a, FloatingState& s) {
 
 class FloatingScene {
  public:
-  // Reads and checks the deck (InputError with file:line before anything runs).
-  explicit FloatingScene(const io::ValidatedDeck& deck);
+  // Reads and checks the deck (InputError with file:line before anything runs). `check` sets up
+  // all but a turbulent wind field (RotorAero::WindSetUp): a scene to check a deck with, not to run.
+  enum class SetUp { run, check };
+  explicit FloatingScene(const io::ValidatedDeck& deck, SetUp setup = SetUp::run);
   FloatingScene(const FloatingScene&) = delete;  // the blades and the loads refer to members
   FloatingScene& operator=(const FloatingScene&) = delete;
   ~FloatingScene();

@@ -67,8 +67,9 @@ void validate(const BaselineParams& p) {
   positive("integral_gain", p.integral_gain);  // > 0: the integrator is seeded as θ/(G_K K_I)
   positive("gain_schedule_pitch_rad", p.gain_schedule_pitch_rad);
   finite("min_pitch_rad", p.min_pitch_rad);
-  e.require(std::isfinite(p.max_pitch_rad) && p.max_pitch_rad > p.min_pitch_rad, "max_pitch_rad", p.max_pitch_rad,
-            "a finite value > min_pitch_rad");
+  // Equal limits hold the blades at that pitch: a parked rotor feathered (DLC 6.1).
+  e.require(std::isfinite(p.max_pitch_rad) && p.max_pitch_rad >= p.min_pitch_rad, "max_pitch_rad", p.max_pitch_rad,
+            "a finite value ≥ min_pitch_rad");
   // G_K = 1/(1 + θ/θ_K) must stay positive and finite over the pitch range.
   e.require(p.min_pitch_rad > -p.gain_schedule_pitch_rad, "min_pitch_rad", p.min_pitch_rad,
             "a value > −gain_schedule_pitch_rad (the gain correction 1/(1+θ/θ_K) must stay positive)");

@@ -103,3 +103,19 @@ TEST_CASE("sample time: updates when the sample time has elapsed", "[unit][contr
     CHECK(updates == 300 / expected_every);
   }
 }
+
+TEST_CASE("equal pitch limits hold the blades there: a parked rotor stays feathered", "[unit][control]") {
+  // Intent: DLC 6.1 parks the rotor by making the feather angle both limits. At zero rotor speed
+  // (the speed error as negative as it gets) the law must keep the pitch at feather, not drive it
+  // towards fine pitch, and the limits must pass validation.
+  BaselineParams p = nrel5mw_land_baseline();
+  p.min_pitch_rad = p.max_pitch_rad;
+  REQUIRE_NOTHROW(validate(p));
+  Controller::State s = Controller::make_state(p);
+  const double dt = 0.0125;
+  for (int k = 0; k < 800; ++k) Controller::advance(p, measured(0.0, p.max_pitch_rad), k * dt, dt, s);  // 10 s parked
+  for (const double demand : s.pitch_demand_rad) CHECK(demand == p.max_pitch_rad);
+  // Limits the other way round stay an error.
+  p.min_pitch_rad = p.max_pitch_rad + 0.01;
+  CHECK_THROWS_WITH(validate(p), Catch::Contains("max_pitch_rad"));
+}

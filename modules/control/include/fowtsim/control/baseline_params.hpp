@@ -48,7 +48,7 @@ struct BaselineParams {
   double integral_gain = 0.008068634;            // PC_KI at zero pitch [rad/rad] = [-]
   double gain_schedule_pitch_rad = 0.1099965;    // PC_KK: pitch at which the gains are halved [rad]
   double min_pitch_rad = 0.0;                    // PC_MinPit [rad]
-  double max_pitch_rad = 1.570796;               // PC_MaxPit [rad]
+  double max_pitch_rad = 1.570796;               // PC_MaxPit [rad], ≥ min_pitch_rad (equal: pitch held there)
   double max_pitch_rate_rad_s = 0.1396263;       // PC_MaxRat: |dθ/dt| limit [rad/s] (8°/s)
 
   // --- electrical -------------------------------------------------------------------------------
