@@ -24,6 +24,7 @@ void bench_beam(std::FILE* out);
 void bench_aero(std::FILE* out);       // bench_turbine.cpp
 void bench_multibody(std::FILE* out);
 void bench_turbine(std::FILE* out);    // bench_flexible_turbine.cpp
+void bench_stability(std::FILE* out);  // bench_stability.cpp
 std::vector<VerificationRow> verify_sea(std::FILE* out);  // verify_sea.cpp
 void bench_hydro(std::FILE* out);
 void bench_waves(std::FILE* out);
@@ -101,7 +102,7 @@ std::filesystem::path default_shared_dir() {
   return (root.parent_path() / "shared").lexically_normal();
 }
 
-std::vector<std::string> benchmark_case_names() { return {"coupling", "beam", "hydro", "waves", "aero", "multibody", "turbine"}; }
+std::vector<std::string> benchmark_case_names() { return {"coupling", "beam", "hydro", "waves", "aero", "multibody", "turbine", "stability"}; }
 
 // A shipped input deck: inputs/<relative> under the working directory when run from the source
 // tree, else the source tree this binary was built from.
@@ -120,8 +121,9 @@ void run_benchmark_case(const std::string& name, std::FILE* out) {
   if (name == "aero") return bench_aero(out);
   if (name == "multibody") return bench_multibody(out);
   if (name == "turbine") return bench_turbine(out);
+  if (name == "stability") return bench_stability(out);
   if (name != "coupling") {
-    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody, turbine"}, fmt::format("unknown benchmark case '{}'", name));
+    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody, turbine, stability"}, fmt::format("unknown benchmark case '{}'", name));
   }
   const ToyProblem problem = study_problem();
   constexpr double kTmax = 200.0;
