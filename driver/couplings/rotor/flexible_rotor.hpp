@@ -68,6 +68,8 @@ struct FlexibleRotorParams {
   beam::BeamModel blade;                 // one blade, clamped at the origin of f
   beam::DynamicOptions dynamics;         // generalized-α (ρ∞, matrix reuse)
   double hub_inertia_kg_m2 = 0.0;        // HubIner about the shaft
+  double hub_mass_kg = 0.0;              // HubMass (for the shaft's thrust channel)
+  double hub_cm_m = 0.0;                 // HubCM: apex to the hub's CM along the shaft, + downwind [m]
   double generator_inertia_kg_m2 = 0.0;  // GenIner about the HSS
   double gearbox_ratio = 1.0;
   bool torsional_flexibility = false;

@@ -64,7 +64,7 @@ aero::TowerDragLoad RotorAero::tower_drag(double t, const multibody::ChainKinema
   for (std::size_t i = 0; i < w.position.size(); ++i)
     w.velocity[i] = chain.reference.velocity_m_s + chain.base.angular_velocity_rad_s.cross(w.position[i] - r);
   wind_->velocities_profile_below(w.position, t, w.inflow);  // the tower's foot lies below the grid
-  return aero::tower_drag(params_, axis, w.position, w.velocity, w.inflow, r);
+  return aero::tower_drag(params_, axis, w.position, w.velocity, w.inflow, chain.tower_base.position_m);
 }
 
 void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad,

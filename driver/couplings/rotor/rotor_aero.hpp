@@ -67,7 +67,8 @@ class RotorAero {
   // Aerodynamic drag on the rigid tower (aero.tower_drag, AeroDyn TwrAero; aero/tower_drag.hpp) at
   // time t in the chain configuration `chain`: the stations on the tower axis through
   // tower_axis_at_sea_level, moving with the base body, in the wind of the field (the mean profile
-  // below a turbulence grid); force and moment about the platform reference point r, g [N, N·m].
+  // below a turbulence grid); force and moment about the tower-base point, g [N, N·m]
+  // (multibody::AppliedLoads::tower_force_N).
   aero::TowerDragLoad tower_drag(double t, const multibody::ChainKinematics& chain, TowerWorkspace& w) const;
 
   // Unsteady airfoil aerodynamics and dynamic inflow (aero.unsteady_airfoil, aero.dynamic_inflow):

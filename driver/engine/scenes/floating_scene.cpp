@@ -68,10 +68,10 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
       out.rotor_force_N = aero_data_->force_N;
       out.rotor_moment_N_m = aero_data_->moment_N_m;
     }
-    if (rotor_ && rotor_->tower_drag_on()) {  // on the rigid tower, part of the base body: about r
+    if (rotor_ && rotor_->tower_drag_on()) {
       const aero::TowerDragLoad drag = rotor_->tower_drag(t, chain_, tower_);
-      out.platform_force_N += drag.force_N;
-      out.platform_moment_N_m += drag.moment_N_m;
+      out.tower_force_N += drag.force_N;
+      out.tower_moment_N_m += drag.moment_N_m;
     }
   }
   multibody::SpinMotion rotor_spin(double t) override {
@@ -254,11 +254,13 @@ void FloatingScene::row(double t, const FloatingState& s, std::span<double> out)
   multibody::AppliedLoads loads;
   stage_loads_->loads(t, s.body, loads);
   const std::span<double> v(values_);
-  if (body_block_.written) {
+  if (body_block_.written || sea_block_.written) {  // the hydro channels take the platform's acceleration
     const multibody::Output mo = multibody::Multibody::outputs(model_, loads, s.body, t);
     std::copy(mo.channels.begin(), mo.channels.end(), v.begin());
+    Vec6 acceleration;
+    acceleration << mo.platform_acceleration_m_s2, mo.platform_angular_acceleration_rad_s2;
+    if (sea_block_.written) sea_->channel_values(t, row_sea_, acceleration, v.subspan(sea_block_.first, sea_block_.count));
   }
-  if (sea_block_.written) sea_->channel_values(t, row_sea_, v.subspan(sea_block_.first, sea_block_.count));
   if (rotor_block_.written) rotor_->channel_values(t, *aero, v.subspan(rotor_block_.first, rotor_block_.count));
   if (blades_block_.written) blades_->channel_values(*s.blades, v.subspan(blades_block_.first, blades_block_.count));
   if (controller_block_.written) {

@@ -59,12 +59,14 @@ struct Trajectory {
   };
   std::vector<Harmonic> harmonics;
 
-  void at(double t, Vec6& q, Vec6& q_dot) const {
+  void at(double t, Vec6& q, Vec6& q_dot, Vec6& q_ddot) const {
     q = mean;
     q_dot.setZero();
+    q_ddot.setZero();
     for (const Harmonic& h : harmonics) {
       q[h.dof] += h.amplitude * std::sin(h.omega * t + h.phase);
       q_dot[h.dof] += h.amplitude * h.omega * std::cos(h.omega * t + h.phase);
+      q_ddot[h.dof] -= h.amplitude * h.omega * h.omega * std::sin(h.omega * t + h.phase);
     }
   }
 };
@@ -140,12 +142,13 @@ RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& 
   // reads the evaluation of its time.
   // A step first moves the radiation memory (potential flow) to its end.
   auto evaluate = [&](double t, bool end_of_step) {
-    Vec6 q, q_dot;
-    trajectory.at(t, q, q_dot);
+    Vec6 q, q_dot, q_ddot;
+    trajectory.at(t, q, q_dot, q_ddot);
     for (int k = 0; k < 6; ++k) values[k] = k < 3 ? q[k] : q[k] / kDegree;
     if (end_of_step) sea.advance(t, platform_motion(q, q_dot), sea_data);
     sea.evaluate(t, platform_motion(q, q_dot), sea_data);
-    sea.channel_values(t, sea_data, std::span<double>(values).subspan(6));
+    // The angle rates stand for ω, as in platform_motion (small rotations about the mean).
+    sea.channel_values(t, sea_data, q_ddot, std::span<double>(values).subspan(6));
   };
   evaluate(0.0, false);
   scene.step = [&](double t, double dt) { evaluate(t + dt, true); };

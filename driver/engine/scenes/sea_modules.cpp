@@ -110,12 +110,12 @@ std::vector<ChannelInfo> SeaModules::channels() const {
   return all;
 }
 
-void SeaModules::channel_values(double t, const Data& d, std::span<double> out) const {
+void SeaModules::channel_values(double t, const Data& d, const Vec6& platform_acceleration, std::span<double> out) const {
   const waves::Waves::Output wo = waves::Waves::outputs(sea_, {}, waves::Waves::State{t});
   std::size_t k = 0;
   for (; k < wo.probe_count; ++k) out[k] = wo.elevation_m[k];
   if (hydro_) {
-    hydro::channel_values(*hydro_, d.hydro_output, out.subspan(k, hydro_channel_count_));
+    hydro::channel_values(*hydro_, d.hydro_output, platform_acceleration, out.subspan(k, hydro_channel_count_));
     k += hydro_channel_count_;
   }
   if (mooring_) mooring::QuasiStaticMooring::channel_values(*mooring_, d.mooring_output, out.subspan(k, channel_count_ - k));

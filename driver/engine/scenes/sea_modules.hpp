@@ -51,7 +51,8 @@ class SeaModules {
 
   // Wave-probe, hydro and mooring channels, in the order channel_values() fills them.
   std::vector<ChannelInfo> channels() const;
-  void channel_values(double t, const Data& d, std::span<double> out) const;
+  // platform_acceleration: [a_ref; α] in g, for the hydro channels' added-mass reaction.
+  void channel_values(double t, const Data& d, const Vec6& platform_acceleration, std::span<double> out) const;
   // Linearised 6×6 mooring stiffness at `pose` (analytic, about the reference point, inertial
   // axes; mooring/stiffness.hpp); zero without mooring.
   Mat6 mooring_stiffness(const FrameMotion& pose) const;

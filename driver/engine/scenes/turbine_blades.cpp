@@ -123,6 +123,8 @@ FlexibleRotorParams rotor_params(const io::ValidatedDeck& deck, const multibody:
   p.dynamics.matrix_max_rotation_rad = keys.step_matrix_max_rotation_rad;
   const multibody::Params& s = model.params;
   p.hub_inertia_kg_m2 = s.rotor.hub_inertia_kg_m2;
+  p.hub_mass_kg = s.rotor.hub_mass_kg;
+  p.hub_cm_m = s.rotor.hub_cm_m;
   p.generator_inertia_kg_m2 = s.drivetrain.generator_inertia_kg_m2;
   p.gearbox_ratio = s.drivetrain.gearbox_ratio;
   p.torsional_flexibility = s.drivetrain.torsional_flexibility;
@@ -337,7 +339,8 @@ std::vector<ChannelInfo> TurbineBlades::channels() const {
                      fmt::format("blade {} internal moment at eta {} about {}_b", b, gauges_eta_[g], axes[i]), "blades"});
     }
   }
-  c.push_back({"RotThrust", "kN", "rotor thrust along the shaft: the blades' root loads on the hub", "blades"});
+  c.push_back({"RotThrust", "kN", "low-speed shaft thrust (ElastoDyn's): the rotor's load on the shaft along it, "
+                                  "the blades' root loads plus the hub's weight less its inertia", "blades"});
   c.push_back({"RotTorq", "kN-m", "low-speed shaft torque: blades' root torque less the hub's inertia", "blades"});
   c.push_back({"LSShftFxa", "kN", "= RotThrust", "blades"});
   c.push_back({"LSShftMxa", "kN-m", "= RotTorq", "blades"});
@@ -386,7 +389,16 @@ void TurbineBlades::channel_values(const Data& d, std::span<double> out) const {
   const double hub_inertia_torque = rotor_.params().hub_inertia_kg_m2 *
                                     (st.spin.rotor_mean_acceleration_rad_s2 +
                                      sh.orientation.col(0).dot(sh.angular_acceleration_rad_s2));
-  const double thrust = hub.force_h_N.x() / 1e3, torque = (hub.moment_h_N_m.x() - hub_inertia_torque) / 1e3;
+  // ElastoDyn's LSShftFxa (= RotThrust) is the force the whole rotor puts on the shaft along x_s:
+  // from the hub's equation of motion, m a = F_blades + m g − F_on_shaft, so the blades' root loads
+  // plus the hub's weight less its inertia (m (g − a)), the hub CM on the shaft axis at HubCM.
+  const Vec3 x_s = sh.orientation.col(0), arm = rotor_.params().hub_cm_m * x_s;
+  const Vec3 hub_cm_acceleration = sh.apex_acceleration_m_s2 + sh.angular_acceleration_rad_s2.cross(arm) +
+                                   sh.angular_velocity_rad_s.cross(sh.angular_velocity_rad_s.cross(arm));
+  const Vec3 gravity(0.0, 0.0, -rotor_.params().gravity_m_s2);
+  const double hub_weight_less_inertia = rotor_.params().hub_mass_kg * (gravity - hub_cm_acceleration).dot(x_s);
+  const double thrust = (hub.force_h_N.x() + hub_weight_less_inertia) / 1e3;
+  const double torque = (hub.moment_h_N_m.x() - hub_inertia_torque) / 1e3;
   out[k++] = thrust;
   out[k++] = torque;
   out[k++] = thrust;

@@ -222,11 +222,12 @@ std::vector<ChannelInfo> Hydro::channels(const Params& params) {
   const struct {
     const char* prefix;
     const char* what;
-  } parts[6] = {{"Hydro", "total hydrodynamic + hydrostatic load (buoyancy, Morison, added linear, potential flow)"},
+  } parts[6] = {{"Hydro", "total hydrodynamic + hydrostatic load (buoyancy, Morison, added linear, potential flow, the "
+                           "added-mass reaction −A a)"},
                 {"B1HDS", "hydrostatic load (buoyancy, nonlinear or linear)"},
                 {"HydroMor", "Morison load (strips and end effects, without the added-mass reaction)"},
                 {"HydroAdd", "additional linear load (AddF0, AddCLin, AddBLin, AddBQuad)"},
-                {"B1Rdt", "potential-flow radiation memory load −∫K q̇"},
+                {"B1Rdt", "potential-flow radiation load: memory −∫K q̇ and the reaction −A(∞) a"},
                 {"B1Wvs", "potential-flow first-order wave excitation"}};
   for (const auto& part : std::span(parts, params.potential_flow ? 6 : 4)) {
     for (const char* a : axes) {
@@ -242,8 +243,13 @@ std::vector<ChannelInfo> Hydro::channels(const Params& params) {
   return all;
 }
 
-void channel_values(const Params& params, const Hydro::Output& o, std::span<double> values) {
-  const Vec6* parts[6] = {&o.total, &o.buoyancy, &o.morison, &o.added_linear, &o.radiation, &o.excitation};
+void channel_values(const Params& params, const Hydro::Output& o, const Vec6& platform_acceleration,
+                    std::span<double> values) {
+  const Vec6 total = o.total - o.added_mass * platform_acceleration;
+  const Vec6 radiation =
+      params.potential_flow ? Vec6(o.radiation - params.potential_flow->radiation.added_mass_infinite_frequency * platform_acceleration)
+                            : o.radiation;
+  const Vec6* parts[6] = {&total, &o.buoyancy, &o.morison, &o.added_linear, &radiation, &o.excitation};
   const int count = params.potential_flow ? 6 : 4;
   if (values.size() != static_cast<std::size_t>(6 * count))
     misuse("channel values", fmt::format("{} values for {} channels", values.size(), 6 * count));

@@ -1,6 +1,7 @@
 // The structure-acceleration part of Morison as a 6×6 added-mass matrix about the reference point.
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
 #include <catch2/catch.hpp>
@@ -59,4 +60,22 @@ TEST_CASE("added mass transforms as a rigid-body 6x6 under rotation and with axi
   CHECK((rotated - phi * upright * phi.transpose()).norm() < 1e-11 * upright.norm());
   const Eigen::SelfAdjointEigenSolver<Mat6> eig(rotated);
   CHECK(eig.eigenvalues().minCoeff() > -1e-9 * eig.eigenvalues().maxCoeff());
+}
+
+// Intent: HydroDyn's HydroF·i/HydroM·i (and B1Rdt·) hold the added-mass reaction −A [a; α]; ours
+// keep A on the solver's left-hand side, so the channels add it back from the platform's
+// acceleration: exactly total − A a, and the radiation part only A(∞).
+TEST_CASE("the total hydro channels include the added-mass reaction of the platform's acceleration", "[unit][hydro]") {
+  const fowtsim::hydro::Params params;  // no potential flow: 24 channels (total, hydrostatics, Morison, added linear)
+  fowtsim::hydro::Hydro::Output out;
+  out.total << 1.0, 2.0, 3.0, 4.0, 5.0, 6.0;
+  out.added_mass = fowtsim::Mat6::Identity() * 1000.0;
+  out.added_mass(0, 4) = out.added_mass(4, 0) = 50.0;  // surge–pitch coupling
+  fowtsim::Vec6 acceleration;
+  acceleration << 0.1, 0.0, -0.2, 0.0, 0.01, 0.0;
+  std::vector<double> values(fowtsim::hydro::Hydro::channels(params).size());
+  fowtsim::hydro::channel_values(params, out, acceleration, values);
+  const fowtsim::Vec6 expected = out.total - out.added_mass * acceleration;
+  for (int i = 0; i < 6; ++i) CHECK(values[static_cast<std::size_t>(i)] == expected[i]);
+  CHECK(values[0] == 1.0 - (1000.0 * 0.1 + 50.0 * 0.01));
 }

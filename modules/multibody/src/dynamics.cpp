@@ -108,6 +108,9 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
   // Platform loads at r.
   f.noalias() += k.reference.jacobian.transpose() * loads.platform_force_N;
   f.noalias() += k.base.jacobian.transpose() * loads.platform_moment_N_m;
+  // Tower loads at the tower base (the tower is part of the base body).
+  f.noalias() += k.tower_base.jacobian.transpose() * loads.tower_force_N;
+  f.noalias() += k.base.jacobian.transpose() * loads.tower_moment_N_m;
 
   // Rotor loads: everything reduced to a force at the apex and a moment about it.
   Vec3 rotor_force = loads.rotor_force_N;

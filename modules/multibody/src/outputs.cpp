@@ -59,10 +59,13 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
   yaw.head<3>() += rotor_force;
   yaw.tail<3>() += rotor_moment;
 
-  // Tower base: the tower (+ yaw-bearing mass) and the yaw-bearing load carried down.
+  // Tower base: the tower (+ yaw-bearing mass) with its external load, and the yaw-bearing load
+  // carried down.
   const Vec3& base = k.tower_base.position_m;
   Vec6 tower = Vec6::Zero();
   add_body(model.tower.mass_kg, model.tower.inertia_kg_m2, k.tower_cm, k.base, udot, gravity, base, tower);
+  tower.head<3>() += loads.tower_force_N;
+  tower.tail<3>() += loads.tower_moment_N_m;
   tower.head<3>() += yaw.head<3>();
   tower.tail<3>() += yaw.tail<3>() + (top - base).cross(yaw.head<3>());
 

@@ -103,8 +103,13 @@ void waterline_points(const Params& params, const FrameMotion& platform, Eigen::
 // Current velocity at height z (g) for the current profile [m/s].
 Vec3 current_velocity(const CurrentParams& current, double z_m);
 
-// Values of channels(params) in the same order (24, and 12 more with potential flow).
-void channel_values(const Params& params, const Hydro::Output& output, std::span<double> values);
+// Values of channels(params) in the same order (24, and 12 more with potential flow). As in
+// HydroDyn, the total (HydroF·i, HydroM·i) and the radiation load (B1RdtF·i, …) include the
+// added-mass reaction −A [a_ref; α] of the platform's acceleration `platform_acceleration`
+// ([a_ref; α] in g, as Output::added_mass takes it): all added mass for the total, A(∞) for the
+// radiation.
+void channel_values(const Params& params, const Hydro::Output& output, const Vec6& platform_acceleration,
+                    std::span<double> values);
 
 // q̇ = [ṙ_ref; ω in g] of a platform motion: the velocity the radiation memory takes.
 Vec6 generalised_velocity(const FrameMotion& platform);

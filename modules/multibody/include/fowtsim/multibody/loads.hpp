@@ -29,6 +29,11 @@ struct AppliedLoads {
   // moment about the apex, g. With rigid blades the driver sums its blade-node loads here.
   Vec3 rotor_force_N = Vec3::Zero();         // [N]
   Vec3 rotor_moment_N_m = Vec3::Zero();      // about the apex [N·m]
+  // External load on the (rigid) tower, e.g. its aerodynamic drag: force, and moment about the
+  // tower-base point, g. It moves the base body as a platform load would, and the tower-base
+  // channels (TwrBs*) carry it, as everything above the tower base.
+  Vec3 tower_force_N = Vec3::Zero();         // [N]
+  Vec3 tower_moment_N_m = Vec3::Zero();      // about the tower-base point [N·m]
   bool gravity = true;                       // weight of every body, Params::gravity_m_s2 along −z_g
 };
 
