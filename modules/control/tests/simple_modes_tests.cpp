@@ -71,7 +71,7 @@ TEST_CASE("simple VS law: the three regions and the transition speed from the qu
   CHECK(c.synchronous_speed_rad_s == Approx(w_sync).epsilon(1e-13));
   CHECK(c.slope_N_m_s == Approx(slope).epsilon(1e-13));
   // Closed-form root vs 200 bisections (interval below 1 ulp): 1e-12 relative. For the 5MW numbers
-  // ω_t = 1128.9 rpm (118.2 rad/s), between ω_s = 1056.3 rpm and rated.
+  // ω_t = 1150.88 rpm (120.52 rad/s), between ω_s = 1067.0 rpm and rated 1173.7 rpm.
   const double w_t = crossing_by_bisection(v, w_sync);
   CHECK(c.transition_speed_rad_s == Approx(w_t).epsilon(1e-12));
   CHECK(c.transition_speed_rad_s > w_sync);
