@@ -111,3 +111,34 @@ TEST_CASE("the controller section fills the baseline law, and a DISCON library r
   CHECK_THAT(missing, Catch::Contains((dir / "libnothere.so").lexically_normal().string()));  // resolved beside the deck
   CHECK_THROWS_WITH(controller_params(section("controller: {type: discon}\n")), Catch::Contains("type discon needs `library`"));
 }
+
+TEST_CASE("the controller section chooses ServoDyn's simple modes; their keys come with their law", "[unit][decks]") {
+  const auto dir = testing::scratch_dir("deck_section_simple_modes");
+  auto params = [&](const std::string& yaml) {
+    std::ofstream(dir / "deck.yaml") << yaml;
+    return controller_params(io::read_deck(Schema::map({{"controller", controller_schema()}}), dir / "deck.yaml").section("controller"));
+  };
+  // The shipped deck: both laws swapped, the four simple-VS inputs in SI, no PI gains needed.
+  const ControllerParams shipped = params("include: [" + (testing::source_dir() / "inputs/nrel5mw/controller_simple_vs.yaml").string() +
+                                          "]\ncontroller: {integral_gain: 0.0}\n");
+  REQUIRE(std::holds_alternative<control::BaselineParams>(shipped));
+  const auto& p = std::get<control::BaselineParams>(shipped);
+  CHECK(p.generator == control::GeneratorLaw::simple_vs);
+  CHECK(p.pitch == control::PitchLaw::fixed);
+  CHECK(p.simple_vs.rated_generator_speed_rad_s == 122.90958);
+  CHECK(p.simple_vs.rated_torque_N_m == 43093.55);
+  CHECK(p.simple_vs.region2_gain_N_m_s2 == 2.332288);
+  CHECK(p.simple_vs.slip_percent == 10.0);
+  // Defaults: the baseline laws.
+  const auto d = std::get<control::BaselineParams>(params("controller: {}\n"));
+  CHECK(d.generator == control::GeneratorLaw::baseline);
+  CHECK(d.pitch == control::PitchLaw::baseline);
+  // A law without its keys, keys without their law, a missing key, and the simple modes on a DISCON.
+  CHECK_THROWS_WITH(params("controller: {generator: simple_vs}\n"), Catch::Contains("needs the `simple_vs` section"));
+  const std::string keys = "simple_vs: {rated_generator_speed_rad_s: 122.9, rated_torque_N_m: 43093.55, region2_gain_N_m_s2: 2.33, slip_percent: 10}";
+  CHECK_THROWS_WITH(params("controller: {" + keys + "}\n"), Catch::Contains("given but generator is baseline"));
+  CHECK_THROWS_WITH(params("controller: {generator: simple_vs, simple_vs: {rated_torque_N_m: 1.0}}\n"),
+                    Catch::Contains("rated_generator_speed_rad_s"));
+  CHECK_THROWS_WITH(params("controller: {type: discon, library: x.so, pitch: fixed}\n"), Catch::Contains("built-in controller only"));
+  CHECK_NOTHROW(params("controller: {pitch: fixed, integral_gain: 0.0}\n"));  // PCMode 0 with the baseline torque
+}

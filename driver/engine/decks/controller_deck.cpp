@@ -14,7 +14,7 @@ using control::ExternalSettings;
 
 namespace {
 
-// What the section fills: the type, and the parameters of either law.
+// What the section fills: the type, and the parameters of either controller.
 struct ControllerDeck {
   std::string type;
   BaselineParams baseline;
@@ -26,6 +26,18 @@ struct ControllerDeck {
 using BaselineField = double BaselineParams::*;
 // Pitch limits and efficiency serve both laws (DISCON records 6–9, GenPwr): one key, two fields.
 using SharedField = std::pair<double BaselineParams::*, double ExternalSettings::*>;
+
+// ServoDyn's "SIMPLE VARIABLE-SPEED TORQUE CONTROL" inputs in SI units: no defaults, all four given.
+DeckSection<control::SimpleVsParams> simple_vs_section() {
+  using control::SimpleVsParams;
+  DeckSection<SimpleVsParams> s;
+  s.key("rated_generator_speed_rad_s", Schema::number().doc("VS_RtGnSp (ServoDyn: rpm × π/30)"), &SimpleVsParams::rated_generator_speed_rad_s)
+      .key("rated_torque_N_m", Schema::number().doc("VS_RtTq: rated torque, constant in region 3"), &SimpleVsParams::rated_torque_N_m)
+      .key("region2_gain_N_m_s2", Schema::number().doc("VS_Rgn2K in N·m/(rad/s)² (ServoDyn: N·m/rpm² × (30/π)²)"),
+           &SimpleVsParams::region2_gain_N_m_s2)
+      .key("slip_percent", Schema::number().doc("VS_SlPc: rated slip of the region-2½ line"), &SimpleVsParams::slip_percent);
+  return s;
+}
 
 // Each key once: name, schema and the field it fills (decks/deck_section.hpp).
 const DeckSection<ControllerDeck>& controller_section() {
@@ -43,6 +55,12 @@ const DeckSection<ControllerDeck>& controller_section() {
     DeckSection<ControllerDeck> s;
     s.key("type", Schema::choice({"baseline", "discon"}).default_value("baseline").doc("built-in NREL 5MW law or a DISCON library"),
           &ControllerDeck::type);
+    s.key("generator", Schema::choice({"baseline", "simple_vs"}).default_value("baseline").doc("torque law: the baseline schedule or ServoDyn's simple variable-speed law (VSContrl 1)"),
+          [](ControllerDeck& c) -> control::GeneratorLaw& { return c.baseline.generator; }, control::generator_law_from_name);
+    s.key("pitch", Schema::choice({"baseline", "fixed"}).default_value("baseline").doc("pitch law: the baseline PI or none, blades held at their initial pitch (PCMode 0)"),
+          [](ControllerDeck& c) -> control::PitchLaw& { return c.baseline.pitch; }, control::pitch_law_from_name);
+    s.section("simple_vs", simple_vs_section(), [](ControllerDeck& c) -> control::SimpleVsParams& { return c.baseline.simple_vs; }, true,
+              "ServoDyn's simple variable-speed law (generator simple_vs), HSS side");
     baseline(s, "sample_time_s", &BaselineParams::sample_time_s, "controller sample time (0: every call)");
     baseline(s, "filter_corner_rad_s", &BaselineParams::filter_corner_rad_s, "generator-speed low-pass corner");
     baseline(s, "cut_in_speed_rad_s", &BaselineParams::cut_in_speed_rad_s, "VS_CtInSp (HSS)");
@@ -92,10 +110,17 @@ ControllerParams controller_params(const io::ValidatedDeck& c) {
     ControllerDeck deck;
     controller_section().read_into(c, deck);
     if (deck.type == "discon") {
+      if (deck.baseline.generator != control::GeneratorLaw::baseline || deck.baseline.pitch != control::PitchLaw::baseline)
+        throw InputError({"control", std::nullopt, "controller.type", "generator and pitch choose built-in laws: use type baseline"},
+                         "type discon runs the library's own laws; `generator`/`pitch` apply to the built-in controller only");
       if (!deck.has_library)
         throw InputError({"control", std::nullopt, "controller.library", "a DISCON library path"}, "type discon needs `library`");
       return control::ExternalController::make_params(deck.external);
     }
+    // A law's keys without the law (or the reverse) is a deck mistake, not something to ignore.
+    if ((deck.baseline.generator == control::GeneratorLaw::simple_vs) != c.has("simple_vs"))
+      throw InputError({"control", std::nullopt, "controller.simple_vs", "give `simple_vs` exactly when generator is simple_vs"},
+                       c.has("simple_vs") ? "`simple_vs` given but generator is baseline" : "generator simple_vs needs the `simple_vs` section");
     control::validate(deck.baseline);
     return deck.baseline;
   } catch (const InputError& e) {

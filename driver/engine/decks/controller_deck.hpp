@@ -1,6 +1,8 @@
 #pragma once
-// The `controller:` deck section: the built-in NREL 5MW baseline law (type baseline, keys one to
-// one onto control::BaselineParams) or an external Bladed-style DISCON library (type discon).
+// The `controller:` deck section: the built-in controller (type baseline, keys one to one onto
+// control::BaselineParams: the NREL 5MW baseline laws, or ServoDyn's simple modes with `generator:
+// simple_vs` + `simple_vs: {…}` and `pitch: fixed`) or an external Bladed-style DISCON library
+// (type discon).
 #include <variant>
 
 #include "fowtsim/control/baseline_controller.hpp"

@@ -136,7 +136,7 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   if (deck.has("controller")) {
     ControllerParams cp = controller_params(deck.section("controller"));
     if (const auto* b = std::get_if<control::BaselineParams>(&cp))
-      overspeed_rad_s_ = 1.3 * b->rated_generator_speed_rad_s / structure_.drivetrain.gearbox_ratio;
+      overspeed_rad_s_ = 1.3 * control::rated_speed_of_law_rad_s(*b) / structure_.drivetrain.gearbox_ratio;
     controller_.emplace(std::move(cp));
   }
   if (deck.has("blades")) blades_.emplace(deck, model_, rotor_ ? &*rotor_ : nullptr);

@@ -11,6 +11,20 @@ namespace {
 // may appear a few ulps early. Relative to the time itself [s/s].
 constexpr double kTimeRoundoff = 1e-12;
 
+// Region and torque of the generator law in use, before any rate limit: the baseline schedule on
+// the filtered speed and blade 1's last pitch demand, or ServoDyn's simple law on the measured
+// speed (VSContrl 1 acts on the generator speed itself).
+void set_torque_target(const BaselineParams& p, const TorqueCurve& c, const Measurements& m, BaselineState& s) {
+  if (p.generator == GeneratorLaw::simple_vs) {
+    const SimpleVsCurve sc = simple_vs_curve(p.simple_vs);
+    s.region = simple_vs_region(p.simple_vs, sc, m.generator_speed_rad_s);
+    s.torque_demand_N_m = simple_vs_torque(p.simple_vs, sc, s.region, m.generator_speed_rad_s);
+  } else {
+    s.region = torque_region(p, c, s.filtered_speed_rad_s, s.pitch_demand_rad[0]);
+    s.torque_demand_N_m = scheduled_torque(p, c, s.region, s.filtered_speed_rad_s);
+  }
+}
+
 }  // namespace
 
 TorqueCurve torque_curve(const BaselineParams& p) {
@@ -67,12 +81,13 @@ void baseline_update(const BaselineParams& p, const TorqueCurve& c, const Measur
                      BaselineState& s) {
   if (!s.initialised) {
     s.filtered_speed_rad_s = m.generator_speed_rad_s;
-    s.pitch_demand_rad = m.blade_pitch_rad;
+    s.pitch_demand_rad = m.blade_pitch_rad;  // with a fixed pitch, held there for good (PCMode 0)
     // Integral term G_K K_I ∫e = θ_measured: the pitch loop starts where the blades are.
-    const double gk = gain_correction(p, m.blade_pitch_rad[0]);
-    s.speed_error_integral_rad = m.blade_pitch_rad[0] / (gk * p.integral_gain);
-    s.region = torque_region(p, c, s.filtered_speed_rad_s, s.pitch_demand_rad[0]);
-    s.torque_demand_N_m = scheduled_torque(p, c, s.region, s.filtered_speed_rad_s);
+    if (p.pitch == PitchLaw::baseline) {
+      const double gk = gain_correction(p, m.blade_pitch_rad[0]);
+      s.speed_error_integral_rad = m.blade_pitch_rad[0] / (gk * p.integral_gain);
+    }
+    set_torque_target(p, c, m, s);
     s.last_call_time_s = time_s;
     s.last_update_time_s = time_s;
     s.initialised = true;
@@ -92,11 +107,16 @@ void baseline_update(const BaselineParams& p, const TorqueCurve& c, const Measur
   const double w = s.filtered_speed_rad_s;
   const double last_pitch = s.pitch_demand_rad[0];  // blade 1's last demand stands for the collective pitch
 
-  // Torque: schedule, then the rate limit over the elapsed time (38060 §7.2).
-  s.region = torque_region(p, c, w, last_pitch);
-  const double target = scheduled_torque(p, c, s.region, w);
-  const double max_change = p.max_torque_rate_N_m_s * elapsed;
-  s.torque_demand_N_m += std::clamp(target - s.torque_demand_N_m, -max_change, max_change);
+  // Torque: schedule, then the rate limit over the elapsed time (38060 §7.2); the simple law has no
+  // rate limit.
+  const double held_torque = s.torque_demand_N_m;
+  set_torque_target(p, c, m, s);
+  if (p.generator == GeneratorLaw::baseline) {
+    const double max_change = p.max_torque_rate_N_m_s * elapsed;
+    s.torque_demand_N_m = held_torque + std::clamp(s.torque_demand_N_m - held_torque, -max_change, max_change);
+  }
+  s.last_update_time_s = time_s;
+  if (p.pitch == PitchLaw::fixed) return;  // PCMode 0: the first call's pitch stays
 
   // Pitch: gain-scheduled PI on the filtered speed error (38060 §7.3). Anti-windup: the integral
   // term G_K K_I ∫e is kept within [θ_min, θ_max], so it never winds beyond the actuator range.
@@ -114,7 +134,6 @@ void baseline_update(const BaselineParams& p, const TorqueCurve& c, const Measur
     s.pitch_demand_rad[b] =
         std::clamp(measured + std::clamp(command - measured, -max_step, max_step), p.min_pitch_rad, p.max_pitch_rad);
   }
-  s.last_update_time_s = time_s;
 }
 
 }  // namespace fowtsim::control

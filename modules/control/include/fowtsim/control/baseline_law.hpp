@@ -49,10 +49,21 @@ TorqueRegion torque_region(const BaselineParams& p, const TorqueCurve& c, double
 double scheduled_torque(const BaselineParams& p, const TorqueCurve& c, TorqueRegion region,
                         double filtered_speed_rad_s);
 
+// Region of ServoDyn's simple variable-speed law at the measured generator speed ω: region 3 when
+// ω ≥ VS_RtGnSp, region 2 below the transition speed, region 2½ between (simple_vs_law.cpp).
+TorqueRegion simple_vs_region(const SimpleVsParams& p, const SimpleVsCurve& c, double generator_speed_rad_s);
+
+// Torque of the simple law in that region [N·m]: k ω², S (ω − ω_s) or VS_RtTq; no limits, no filter.
+double simple_vs_torque(const SimpleVsParams& p, const SimpleVsCurve& c, TorqueRegion region,
+                        double generator_speed_rad_s);
+
 // One call of the law at time `time_s` with the measurements `m`. The first call seeds the filter
 // with the measured speed, the held pitch demands with the measured pitches and the integrator so
 // that the integral term reproduces the measured blade-1 pitch (no bump), and sets the torque from
 // the schedule without rate limit. A call at a time not after the previous one changes nothing.
+// With p.generator = simple_vs the torque is ServoDyn's simple law at the measured speed at every
+// update (no filter, no rate limit: VSContrl 1 has none); with p.pitch = fixed the pitch demands
+// stay at the first call's measured pitch and the integrator is not used (PCMode 0).
 // Does not check finiteness (the caller does).
 void baseline_update(const BaselineParams& p, const TorqueCurve& c, const Measurements& m, double time_s,
                      BaselineState& s);

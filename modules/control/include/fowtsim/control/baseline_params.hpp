@@ -1,8 +1,10 @@
 #pragma once
-// Parameters of the NREL 5-MW baseline controller (Jonkman et al., NREL/TP-500-38060, 2009, Ch. 7):
+// Parameters of the built-in controller: by default the NREL 5-MW baseline controller (Jonkman et al., NREL/TP-500-38060, 2009, Ch. 7):
 // a single-pole low-pass filter on the generator speed, a variable-speed generator-torque schedule
 // (regions 1, 1½, 2, 2½, 3) with torque and torque-rate limits, and a gain-scheduled PI collective
-// blade-pitch controller with pitch-angle and pitch-rate limits. Each member maps one to one onto a
+// blade-pitch controller with pitch-angle and pitch-rate limits. Either law can be swapped for one
+// of ServoDyn's simple modes: the simple variable-speed generator law (VSContrl 1) and no pitch
+// control (PCMode 0). Each member maps one to one onto a
 // key of the deck section `controller:` (inputs/nrel5mw/controller_land.yaml). Speeds are on the
 // high-speed (generator) shaft, angles in radians, SI everywhere (DESIGN.md §3).
 //
@@ -23,7 +25,45 @@ enum class Region3Torque {
 Region3Torque region3_torque_from_name(std::string_view name);
 const char* region3_torque_name(Region3Torque mode);
 
+// Which generator-torque law runs (OpenFAST ServoDyn's VSContrl, NREL/TP-500-38060 §7.2).
+enum class GeneratorLaw {
+  baseline,   // the 38060 schedule below (regions 1–3, filter, torque and rate limits): a DISCON, VSContrl 5
+  simple_vs,  // ServoDyn's simple variable-speed law (VSContrl 1): SimpleVsParams, on the measured speed
+};
+// Which blade-pitch law runs (ServoDyn's PCMode).
+enum class PitchLaw {
+  baseline,  // the gain-scheduled PI of 38060 §7.3 (a DISCON, PCMode 5)
+  fixed,     // no pitch control (PCMode 0): every blade held at its pitch at the first call
+};
+
+// "baseline" | "simple_vs" and "baseline" | "fixed"; InputError naming the key otherwise.
+GeneratorLaw generator_law_from_name(std::string_view name);
+PitchLaw pitch_law_from_name(std::string_view name);
+
+// ServoDyn's simple variable-speed generator law (VSContrl 1; inputs as documented in the ServoDyn
+// input file, "SIMPLE VARIABLE-SPEED TORQUE CONTROL", and OpenFAST docs user/servodyn/input.rst).
+// ServoDyn takes speeds in rpm and VS_Rgn2K in N·m/rpm²; here rad/s and N·m/(rad/s)² like the rest
+// of the section: k[N·m/(rad/s)²] = VS_Rgn2K[N·m/rpm²] × (30/π)². No default: all four are given.
+struct SimpleVsParams {
+  double rated_generator_speed_rad_s = 0.0;  // VS_RtGnSp: rated generator speed, HSS [rad/s]
+  double rated_torque_N_m = 0.0;             // VS_RtTq: rated / constant region-3 torque, HSS [N·m]
+  double region2_gain_N_m_s2 = 0.0;          // VS_Rgn2K: k in T = k ω² [N·m/(rad/s)²]
+  double slip_percent = 0.0;                 // VS_SlPc: rated slip of the region-2½ line [%]
+};
+
+// Closed-form quantities of the simple law (derivation in simple_vs_law.cpp).
+struct SimpleVsCurve {
+  double synchronous_speed_rad_s = 0.0;  // ω_s = VS_RtGnSp / (1 + VS_SlPc/100): zero torque of the 2½ line
+  double slope_N_m_s = 0.0;              // S = VS_RtTq / (VS_RtGnSp − ω_s) [N·m/(rad/s)]
+  double transition_speed_rad_s = 0.0;   // ω_t: region 2 → 2½, lower root of k ω² = S (ω − ω_s)
+};
+
 struct BaselineParams {
+  // --- which laws run (the baseline ones by default) -----------------------------------------------
+  GeneratorLaw generator = GeneratorLaw::baseline;
+  PitchLaw pitch = PitchLaw::baseline;
+  SimpleVsParams simple_vs{};  // used only with generator = simple_vs
+
   // --- timing ------------------------------------------------------------------------------------
   double sample_time_s = 0.0;  // controller sample time [s], ≥ 0; 0 = update at every call (DISCON DT)
 
@@ -63,6 +103,12 @@ struct TorqueCurve {
   double transition_speed_rad_s = 0.0;    // region 2 → 2½: lower root of k ω² = S₂½ (ω − ω_s) [rad/s]
   double rated_torque_N_m = 0.0;          // P_rated / ω_ref: constant-torque region-3 value [N·m]
 };
+
+// The simple law's curve of p (no check; validate() rejects parameters without a 2/2½ crossing).
+SimpleVsCurve simple_vs_curve(const SimpleVsParams& p);
+
+// Rated generator speed of the generator law in use (VS_RtGnSp of the baseline or of the simple law) [rad/s].
+double rated_speed_of_law_rad_s(const BaselineParams& p);
 
 // The torque curve of p; NaN members when p has no region-2/2½ intersection (validate() rejects that).
 TorqueCurve torque_curve(const BaselineParams& p);
