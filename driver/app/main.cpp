@@ -12,6 +12,7 @@
 #include "verify/reports.hpp"
 #include "verify/verify_cases.hpp"
 #include "compare/channel_compare.hpp"
+#include "compare/comparison_table.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/version.hpp"
 #include "fowtsim/io/readers.hpp"
@@ -54,11 +55,13 @@ CLI::Validator positive(const char* what) {
 
 int compare_command(const std::string& ref, const std::string& test, const std::vector<std::string>& channels,
                     std::optional<double> rtol, std::optional<double> atol, const std::string& tolerance_file,
-                    const std::vector<double>& window, bool stats, std::optional<double> wohler_exponent) {
+                    const std::vector<double>& window, bool stats, double stats_percent,
+                    std::optional<double> wohler_exponent) {
   CompareOptions options = tolerance_file.empty() ? CompareOptions{} : load_tolerance_file(tolerance_file);
   if (rtol || atol) options.default_tolerance = {rtol.value_or(0.0), atol.value_or(0.0), 0.0};
   if (window.size() == 2) options.window = std::pair(window[0], window[1]);
   options.statistics = stats;
+  options.statistics_percent = stats_percent;
   options.wohler_exponent = wohler_exponent;
   if (!channels.empty()) options.channels = channels;
   const io::ChannelTable reference = io::read_channels(ref), tested = io::read_channels(test);
@@ -160,7 +163,16 @@ int main(int argc, char** argv) {
   std::vector<double> window;
   compare->add_option("--window", window, "compare only over T0 T1 [s] (skip start-up transients)")->expected(2);
   bool stats = false;
-  auto* stats_flag = compare->add_flag("--stats", stats, "compare mean, std, min and max per channel instead of sample by sample");
+  auto* stats_flag = compare->add_flag("--stats", stats,
+                                       "compare each channel's mean and std instead of sample by sample: for runs that "
+                                       "cannot agree sample by sample (other seeds, other models)");
+  double stats_percent = kStatisticsPercent;
+  compare->add_option("--stats-percent", stats_percent,
+                      "with --stats: the largest difference that passes, in % of the mean's scale max(|mean|, std) "
+                      "and of the std (default 5: just above what the OC3 load case measures against OpenFAST)")
+      ->check(positive("a positive percentage"))
+      ->needs(stats_flag);
+  stats_flag->excludes(rtol_opt)->excludes(atol_opt);
   double wohler = 0;
   compare->add_option("--wohler", wohler,
                       "with --stats: also compare each channel's damage-equivalent load of this Wöhler exponent "
@@ -279,7 +291,7 @@ int main(int argc, char** argv) {
     }
     if (*compare) {
       return compare_command(ref, test, channels, rtol_opt->count() ? std::optional(rtol) : std::nullopt,
-                             atol_opt->count() ? std::optional(atol) : std::nullopt, tolerance_file, window, stats,
+                             atol_opt->count() ? std::optional(atol) : std::nullopt, tolerance_file, window, stats, stats_percent,
                              wohler > 0 ? std::optional(wohler) : std::nullopt);
     }
     if (*post_command) {

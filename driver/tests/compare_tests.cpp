@@ -1,9 +1,14 @@
-// compare_tables: alignment, metrics and pass/fail on small hand-made tables.
+// compare_tables: alignment, metrics, statistics, units, aliases and pass/fail on small hand-made
+// tables, and the table `fowtsim compare` prints.
 #include <cmath>
+#include <cstdio>
 
 #include <catch2/catch.hpp>
 
+#include <fmt/format.h>
+
 #include "compare/channel_compare.hpp"
+#include "compare/comparison_table.hpp"
 #include "fowtsim/core/error.hpp"
 
 using namespace fowtsim;
@@ -104,20 +109,20 @@ TEST_CASE("compare over a window, by statistics, through aliases", "[unit][compa
   CHECK(w.pass());
   CHECK(w.t_start_s == 2.0);
   CHECK_FALSE(compare_tables(sine_table(0.1), test, {}).pass());
-  // Statistics: B scaled by 1.01 moves every statistic by 1 %: passes 2 %, fails 0.5 %.
+  // Statistics: B scaled by 1.01 moves mean and std by 1 %: passes 2 %, fails 0.5 %.
   CompareOptions stats;
   stats.statistics = true;
-  stats.default_tolerance = {0.02, 0.0, 0.0};
+  stats.statistics_percent = 2.0;
   const ComparisonReport s = compare_tables(sine_table(0.1), sine_table(0.1, 1.01), stats);
   CHECK(s.pass());
-  CHECK(s.channels[1].test_statistics[0] == Approx(1.01 * s.channels[1].reference_statistics[0]));
-  stats.default_tolerance = {0.005, 0.0, 0.0};
+  CHECK(s.channels[1].test_statistics[kMean] == Approx(1.01 * s.channels[1].reference_statistics[kMean]));
+  stats.statistics_percent = 0.5;
   CHECK_FALSE(compare_tables(sine_table(0.1), sine_table(0.1, 1.01), stats).pass());
-  // Aliases: the test calls B "T[1]".
+  // Aliases: the test calls B "Bee".
   auto renamed = sine_table(0.1);
-  renamed.names[2] = "T[1]";
+  renamed.names[2] = "Bee";
   CompareOptions aliased;
-  aliased.aliases["B"] = "T[1]";
+  aliased.aliases["B"] = "Bee";
   const ComparisonReport a = compare_tables(sine_table(0.1), renamed, aliased);
   CHECK(a.channels.size() == 2);
   CHECK(a.pass());
@@ -131,7 +136,8 @@ TEST_CASE("a required channel missing is reported once, and --channels reports o
   CompareOptions options;
   options.channels = {"A", "Nowhere"};
   const ComparisonReport r = compare_tables(sine_table(0.1), test, options);
-  CHECK(r.required_missing_names == std::vector<std::string>{"Nowhere"});
+  REQUIRE(r.required_missing.size() == 1);
+  CHECK(r.required_missing[0].name == "Nowhere");
   CHECK(r.missing_in_test.empty());
   CHECK(r.missing_in_reference.empty());  // "Extra" was not asked for
   CHECK_FALSE(r.pass());
@@ -160,16 +166,139 @@ TEST_CASE("compare --stats --wohler adds the damage-equivalent load", "[unit][co
     }
     return t;
   };
-  CompareOptions stats = with_tolerance({0.02, 0.0, 0.0});
+  CompareOptions stats;
   stats.statistics = true;
-  CHECK(compare_tables(table(1.0), table(2.0), stats).pass());  // the four statistics alone agree
+  stats.statistics_percent = 2.0;
+  CHECK(compare_tables(table(1.0), table(2.0), stats).pass());  // mean and std alone agree
   stats.wohler_exponent = 4.0;
   const ComparisonReport r = compare_tables(table(1.0), table(2.0), stats);
   const ChannelComparison& b = r.channels.at(0);
   // 10 and 20 cycles of range 2 over 20π s (rounding of the sampled peaks: 1e-9)
-  CHECK(b.reference_statistics[4] == Approx(2.0 * std::pow(10.0 / (20.0 * 3.141592653589793), 0.25)).epsilon(1e-9));
-  CHECK(b.test_statistics[4] == Approx(std::pow(2.0, 0.25) * b.reference_statistics[4]).epsilon(1e-9));
+  CHECK(b.reference_statistics[kDel] == Approx(2.0 * std::pow(10.0 / (20.0 * 3.141592653589793), 0.25)).epsilon(1e-9));
+  CHECK(b.test_statistics[kDel] == Approx(std::pow(2.0, 0.25) * b.reference_statistics[kDel]).epsilon(1e-9));
+  CHECK(b.difference_percent[kDel] == Approx(100.0 * (std::pow(2.0, 0.25) - 1.0)).epsilon(1e-9));  // 18.9 %
   CHECK_FALSE(r.pass());
   stats.wohler_exponent.reset();  // no exponent, no DEL
-  CHECK(std::isnan(compare_tables(table(1.0), table(2.0), stats).channels.at(0).test_statistics[4]));
+  CHECK(std::isnan(compare_tables(table(1.0), table(2.0), stats).channels.at(0).test_statistics[kDel]));
+}
+
+TEST_CASE("compare --stats judges a mean by the channel's spread and a std by itself", "[unit][compare]") {
+  CompareOptions stats;
+  stats.statistics = true;  // the default 5 %
+  // A: sin t over 0–10 s (mean 0.18, std 0.67). Shifted by 0.02: Δmean is 3 % of the std, a pass,
+  // where a relative difference of the means would be 11 %.
+  auto shifted = sine_table(0.1);
+  for (double& a : shifted.columns[1]) a += 0.02;
+  const ComparisonReport r = compare_tables(sine_table(0.1), shifted, stats);
+  const ChannelComparison& a = r.channels.at(0);
+  CHECK(a.difference_percent[kMean] == Approx(100.0 * 0.02 / a.reference_statistics[kStd]).epsilon(1e-9));
+  CHECK(std::abs(a.difference_percent[kStd]) < 1e-9);
+  CHECK(a.pass);
+  // B: 2 + cos t, its spread about its mean scaled by 1.1: Δstd +10 % of the std fails, the mean stays.
+  auto wider = sine_table(0.1);
+  const double mean_b = compare_tables(sine_table(0.1), sine_table(0.1), stats).channels.at(1).reference_statistics[kMean];
+  for (double& b : wider.columns[2]) b = mean_b + 1.1 * (b - mean_b);
+  const ComparisonReport w = compare_tables(sine_table(0.1), wider, stats);
+  CHECK(w.channels.at(1).difference_percent[kStd] == Approx(10.0).epsilon(1e-9));
+  CHECK(std::abs(w.channels.at(1).difference_percent[kMean]) < 1e-9);
+  CHECK_FALSE(w.channels.at(1).pass);
+  CHECK(w.passed() == 1);
+  CHECK_FALSE(w.pass());
+}
+
+TEST_CASE("a channel constant at zero passes only against zero", "[unit][compare]") {
+  auto zero = sine_table(0.1), small = sine_table(0.1);
+  for (double& b : zero.columns[2]) b = 0.0;
+  for (double& b : small.columns[2]) b = 1e-3;
+  CompareOptions stats;
+  stats.statistics = true;
+  CHECK(compare_tables(zero, zero, stats).pass());
+  const ChannelComparison c = compare_tables(zero, small, stats).channels.at(1);
+  CHECK(std::isinf(c.difference_percent[kMean]));  // no scale to judge 1e-3 against
+  CHECK_FALSE(c.pass);
+}
+
+TEST_CASE("units are converted or refused, never compared as they are", "[unit][compare]") {
+  // B written in kN by the reference and in N by the test: the same load.
+  auto in_newton = sine_table(0.1, 1000.0);
+  auto in_kilonewton = sine_table(0.1);
+  in_kilonewton.units[2] = "kN";
+  const ComparisonReport r = compare_tables(in_kilonewton, in_newton, {});
+  CHECK(r.pass());
+  CHECK(r.channels.at(1).unit_factor == 1e-3);
+  CHECK(r.channels.at(1).max_abs_error < 1e-12);
+  // A moment against a force: not compared, and the comparison fails with why.
+  in_newton.units[2] = "N-m";
+  const ComparisonReport refused = compare_tables(in_kilonewton, in_newton, {});
+  CHECK(refused.channels.size() == 1);
+  REQUIRE(refused.refused.size() == 1);
+  CHECK(refused.refused[0].name == "B");
+  CHECK_THAT(refused.refused[0].reason, Catch::Contains("force") && Catch::Contains("moment"));
+  CHECK_FALSE(refused.pass());
+}
+
+TEST_CASE("MAP++'s T[1] is compared with our FAIRTEN1 without being told", "[unit][compare]") {
+  auto openfast = sine_table(0.1), ours = sine_table(0.1, 1e-3);
+  openfast.names[2] = "T[1]";
+  openfast.units[2] = "[N]";  // as MAP++ writes it
+  ours.names[2] = "FAIRTEN1";
+  ours.units[2] = "kN";
+  const ComparisonReport r = compare_tables(openfast, ours, {});
+  REQUIRE(r.channels.size() == 2);
+  CHECK(r.channels[1].name == "T[1]");
+  CHECK(r.channels[1].test_name == "FAIRTEN1");
+  CHECK(r.channels[1].unit == "N");
+  CHECK(r.channels[1].unit_factor == 1e3);
+  CHECK(r.missing_in_reference.empty());
+  CHECK(r.pass());
+}
+
+TEST_CASE("an OpenFAST channel marked INVALID is set aside, not compared", "[unit][compare]") {
+  auto openfast = sine_table(0.1);
+  openfast.units[2] = "INVALID";  // ElastoDyn's blade loads in a BeamDyn run
+  const ComparisonReport r = compare_tables(openfast, sine_table(0.1, 2.0), {});
+  CHECK(r.channels.size() == 1);
+  CHECK(r.invalid == std::vector<std::string>{"B"});
+  CHECK(r.pass());
+  CompareOptions asked;
+  asked.channels = {"B"};
+  const ComparisonReport a = compare_tables(openfast, sine_table(0.1), asked);
+  REQUIRE(a.required_missing.size() == 1);
+  CHECK_THAT(a.required_missing[0].reason, Catch::Contains("INVALID"));
+}
+
+TEST_CASE("channels asked for and absent are each given a reason", "[unit][compare]") {
+  auto openfast = sine_table(0.1);
+  openfast.names[2] = "T[1]";
+  auto ours = sine_table(0.1);
+  ours.names[2] = "FAIRTEN1";
+  CompareOptions options;
+  options.channels = {"TTDspFA", "Aa", "T[1]"};
+  const ComparisonReport r = compare_tables(openfast, ours, options);
+  REQUIRE(r.required_missing.size() == 2);  // T[1] is found as FAIRTEN1
+  CHECK_THAT(r.required_missing[0].reason, Catch::Contains("in neither file") && Catch::Contains("flexible tower"));
+  CHECK_THAT(r.required_missing[1].reason, Catch::Contains("did you mean `A`?"));
+  CHECK(r.channels.size() == 1);
+}
+
+TEST_CASE("the comparison table counts passes and summarises one-file channels in one line", "[unit][compare]") {
+  auto ref = sine_table(0.1);
+  for (int i = 0; i < 12; ++i) {
+    ref.names.push_back(fmt::format("Only{:02}", i));
+    ref.units.push_back("m");
+    ref.columns.push_back(ref.columns[1]);
+  }
+  CompareOptions stats;
+  stats.statistics = true;
+  const ComparisonReport r = compare_tables(ref, sine_table(0.1, 1.2), stats);
+  std::FILE* f = std::tmpfile();
+  print_comparison(f, r);
+  std::rewind(f);
+  std::string text;
+  for (int c; (c = std::fgetc(f)) != EOF;) text += static_cast<char>(c);
+  std::fclose(f);
+  CHECK_THAT(text, Catch::Contains("1 of 2 channels within 5 %"));
+  CHECK_THAT(text, Catch::Contains("12 channels only in the reference: Only00, Only01") &&
+                       Catch::Contains("Only09, … (first 10)") && !Catch::Contains("Only10"));
+  CHECK_THAT(text, Catch::Contains("+20.0") && Catch::EndsWith("FAIL\n"));
 }

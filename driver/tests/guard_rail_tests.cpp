@@ -441,6 +441,20 @@ TEST_CASE("a misspelt output channel gets a did-you-mean", "[unit][run]") {
   CHECK_THAT(far_message, !Catch::Contains("did you mean") && Catch::Contains("available: ToySlowPos"));
 }
 
+TEST_CASE("every output channel the scene does not write is listed at once, each with why", "[unit][run]") {
+  // The platform scene writes the mooring tensions as FAIRTENi (MoorDyn's names).
+  const auto dir = testing::scratch_dir("guard_channels_all");
+  std::ofstream(dir / "deck.yaml") << "include: [" << platform_deck().string() << "]\n"
+                                   << "output: {channels: [HydroFxi, 'T[1]', TTDspFA, HydroFxii, Zebra]}\n";
+  const std::string message = message_of([&] { run_scene(run_request(dir / "deck.yaml", dir / "run"), nullptr); });
+  CHECK_THAT(message, Catch::Contains("names 4 channels this scene does not write"));
+  CHECK_THAT(message, Catch::Contains("output.channels[1]: unknown channel 'T[1]'") && Catch::Contains("did you mean `FAIRTEN1`?"));
+  CHECK_THAT(message, Catch::Contains("output.channels[2]: unknown channel 'TTDspFA'") && Catch::Contains("flexible tower"));
+  CHECK_THAT(message, Catch::Contains("output.channels[3]: unknown channel 'HydroFxii'") && Catch::Contains("did you mean `HydroFxi`?"));
+  CHECK_THAT(message, Catch::Contains("output.channels[4]: unknown channel 'Zebra': not a channel of this scene"));
+  CHECK_THAT(message, !Catch::Contains("output.channels[0]"));
+}
+
 TEST_CASE("a mooring solver setting outside the module's range stops at its deck line", "[unit][run]") {
   // One range per key: the deck reader holds the mooring module's own bounds (60 … 10000).
   const auto dir = testing::scratch_dir("guard_mooring_range");

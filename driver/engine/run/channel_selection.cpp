@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include "decks/deck_helpers.hpp"
+#include "run/channel_names.hpp"
 #include "scenes/scene_runner.hpp"
 #include "fowtsim/core/error.hpp"
-#include "fowtsim/io/suggest.hpp"
 
 namespace fowtsim::driver {
 
@@ -21,22 +21,24 @@ std::vector<std::size_t> select_channels(const io::ValidatedDeck& deck, const st
   }
   const std::vector<std::string>& names = *listed;
   std::vector<std::string> known;
-  std::string known_text;
-  for (const ChannelInfo& c : all) {
-    known.push_back(c.name);
-    known_text += (known_text.empty() ? "" : ", ") + c.name;
-  }
+  for (const ChannelInfo& c : all) known.push_back(c.name);
+  const std::string available = fmt::format("available: {}", fmt::join(known, ", "));
+  // Every unknown name at once, each with its reason, so one edit of the deck fixes them all.
+  std::vector<std::string> problems, unknown;
   for (std::size_t i = 0; i < names.size(); ++i) {
-    const auto index = registry.find(names[i]);
-    if (!index) {
-      const std::string suggestion = io::did_you_mean(names[i], known, io::LetterCase::ignored);
-      const std::string hint = suggestion.empty() ? "available: " + known_text
-                                                  : suggestion + " (available: " + known_text + ")";
-      throw InputError({scene, {}, names[i], hint}, where(deck, fmt::format("output.channels[{}]", i)) +
-                                                        ": unknown channel '" + names[i] + "'" +
-                                                        (suggestion.empty() ? "" : "; " + suggestion));
+    if (const auto index = registry.find(names[i])) {
+      picked.push_back(*index);
+      continue;
     }
-    picked.push_back(*index);
+    const std::string reason = why_missing(names[i], known);
+    problems.push_back(fmt::format("  {}: unknown channel '{}': {}", where(deck, fmt::format("output.channels[{}]", i)),
+                                   names[i], reason.empty() ? "not a channel of this scene" : reason));
+    unknown.push_back(names[i]);
+  }
+  if (!problems.empty()) {
+    throw InputError({scene, {}, fmt::format("{}", fmt::join(unknown, ", ")), available},
+                     fmt::format("output.channels names {} channel{} this scene does not write:\n{}", problems.size(),
+                                 problems.size() == 1 ? "" : "s", fmt::join(problems, "\n")));
   }
   return picked;
 }

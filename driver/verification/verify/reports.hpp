@@ -1,17 +1,16 @@
 #pragma once
-// Text the command line prints: the run summary, the comparison table, verification tables.
+// Text the command line prints: the run summary and verification tables (the comparison table:
+// compare/comparison_table.hpp).
 #include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include "compare/channel_compare.hpp"
 #include "run/run_types.hpp"
 
 namespace fowtsim::driver {
 
 void print_run_summary(std::FILE* out, const RunReport& report);
-void print_comparison(std::FILE* out, const ComparisonReport& report);
 
 // One line of `fowtsim verify`: a measured metric against its tolerance and the source of both.
 struct VerificationRow {
