@@ -122,6 +122,22 @@ def main():
     # 0.944 → 0.975, yaw 0.929 → 0.976).
     for name in ("PtfmHeave", "PtfmYaw"):
         check(stats["wamit", name][2] > stats["morison", name][2], f"{name}: WAMIT correlates better than Morison")
+    # The tower as OpenFAST's deck has it (potential flow and drag, TwrPotent 1, TwrAero): the mean
+    # offsets that stayed with every hydro model close (measured surge +0.6 %, pitch −1.0 %,
+    # TwrBsMyt −2.0 %, from −3.7, −4.5, −4.8 % without; issue 23's goal 2 % for surge and pitch; the
+    # tower-base moment keeps a part the flexible tower explains, README), and the channels whose
+    # definitions changed carry what OpenFAST's carry: RotThrust the hub's weight (−1.4 %; −13 %
+    # without it), B1RdtFxi and HydroFxi the added-mass reaction (std +1.0 % and −5.1 %; without it
+    # B1RdtFxi's std was a tenth of OpenFAST's).
+    tower = "wamit_ua_tower"
+    for name, bound in (("PtfmSurge", 0.02), ("PtfmPitch", 0.02), ("TwrBsMyt", 0.03), ("RotThrust", 0.03)):
+        mean, _, _, ref_mean, _ = stats[tower, name]
+        check(abs(mean / ref_mean - 1) < bound, f"{tower}: {name} mean within {bound:.0%} ({mean:.4g} vs {ref_mean:.4g})")
+        check(abs(mean / ref_mean - 1) < abs(stats["wamit_ua", name][0] / ref_mean - 1),
+              f"{tower}: {name} mean closer to OpenFAST's than without the tower")
+    for name, bound in (("B1RdtFxi", 0.05), ("HydroFxi", 0.10)):
+        _, std, _, _, ref_std = stats[tower, name]
+        check(abs(std / ref_std - 1) < bound, f"{tower}: {name} std within {bound:.0%} ({std:.4g} vs {ref_std:.4g})")
     if failures:
         print(f"{len(failures)} check(s) failed")
         sys.exit(1)

@@ -117,7 +117,8 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
     throw InputError({"floating", std::nullopt, "structure.rotor.flexible_blades", "a blades section"},
                      where(deck, "structure.rotor.flexible_blades") + ": flexible blades need the `blades` section (their structure)");
   const multibody::State initial = multibody::Multibody::make_state(model_);
-  sea_.emplace(deck, platform_motion(initial), simulation_keys(deck).dt_s);
+  dt_s_ = simulation_keys(deck).dt_s;
+  sea_.emplace(deck, platform_motion(initial), dt_s_);
   if (deck.has("aero")) {
     rotor_.emplace(aero_params(deck), wind_params(deck.section("wind")), structure_,
                    setup == SetUp::check ? RotorAero::WindSetUp::check : RotorAero::WindSetUp::run);
@@ -153,6 +154,13 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   add_block(sea_block_, sea_->channels());
   if (rotor_) add_block(rotor_block_, rotor_->channels());
   if (blades_) add_block(blades_block_, blades_->channels());
+  if (!blades_) {  // rigid blades turn to the held pitch at once (flexible ones: their actuator's channels)
+    std::vector<ChannelInfo> pitch;
+    for (int b = 1; b <= 3; ++b)
+      pitch.push_back({fmt::format("BldPitch{}", b), "deg",
+                       fmt::format("blade {} pitch angle (ElastoDyn's BldPitch): the demand held over the step", b), "structure"});
+    add_block(pitch_block_, pitch);
+  }
   if (controller_) {
     const std::vector<ChannelInfo> c = control::controller_channels("control");
     std::vector<ChannelInfo> kept;
@@ -166,7 +174,7 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   picked_ = select_channels(deck, all_, "floating");
   for (std::size_t i : picked_) {
     written_.push_back(all_[i]);
-    for (Block* b : {&body_block_, &sea_block_, &rotor_block_, &blades_block_, &controller_block_})
+    for (Block* b : {&body_block_, &sea_block_, &rotor_block_, &blades_block_, &pitch_block_, &controller_block_})
       if (i >= b->first && i < b->first + b->count) b->written = true;
   }
   values_.assign(all_.size(), 0.0);
@@ -215,22 +223,28 @@ FloatingState FloatingScene::make_state() {
     stage_loads_->act_on(s.held, s.sea, s.aero ? &*s.aero : nullptr, &*s.blades);
     blades_->start(shaft_at(0.0, s.body), s.body, initial_pitch_rad_, demands(s), *s.blades, s.aero ? &*s.aero : nullptr);
   }
+  sample_controller(0.0, dt_s_, s);  // the demands of t = 0: held over the first step, in the first row
   s.max_rotor_speed_rad_s = std::abs(s.body.rotor_speed_rad_s);
   row_sea_ = s.sea;  // sized once: a row copies into them without allocating
   row_aero_ = s.aero;
   return s;
 }
 
+// The controller samples the state at t and holds its demands over [t, t + dt]. It runs at the
+// end of a step (and once in make_state, at t = 0), so the row at t shows the demands made at t, as
+// ServoDyn's GenTq and BldPitch do; the demands each step holds are those of its start either way.
+void FloatingScene::sample_controller(double t, double dt, FloatingState& s) const {
+  if (!controller_) return;
+  control::ControllerInput u;
+  u.generator_speed_rad_s = structure_.drivetrain.gearbox_ratio * s.body.generator_speed_rad_s;
+  u.rotor_speed_rad_s = s.body.rotor_speed_rad_s;
+  u.blade_pitch_rad.fill(s.held.pitch_rad);
+  if (rotor_) u.hub_wind_speed_m_s = rotor_->probe_wind(t).x();
+  controller_->advance(u, t, dt, *s.controller);
+  s.held = {s.controller->output.generator_torque_N_m, s.controller->output.blade_pitch_rad[0]};
+}
+
 void FloatingScene::step(double t, double dt, FloatingState& s) {
-  if (controller_) {
-    control::ControllerInput u;
-    u.generator_speed_rad_s = structure_.drivetrain.gearbox_ratio * s.body.generator_speed_rad_s;
-    u.rotor_speed_rad_s = s.body.rotor_speed_rad_s;
-    u.blade_pitch_rad.fill(s.held.pitch_rad);
-    if (rotor_) u.hub_wind_speed_m_s = rotor_->probe_wind(t).x();
-    controller_->advance(u, t, dt, *s.controller);
-    s.held = {s.controller->output.generator_torque_N_m, s.controller->output.blade_pitch_rad[0]};
-  }
   RotorAero::Data* aero = s.aero ? &*s.aero : nullptr;
   stage_loads_->act_on(s.held, s.sea, aero, s.blades ? &*s.blades : nullptr);
   if (!blades_) {
@@ -242,6 +256,7 @@ void FloatingScene::step(double t, double dt, FloatingState& s) {
   }
   sea_->advance(t + dt, platform_motion(s.body), s.sea);
   s.max_rotor_speed_rad_s = std::max(s.max_rotor_speed_rad_s, std::abs(s.body.rotor_speed_rad_s));
+  sample_controller(t + dt, dt, s);
 }
 
 void FloatingScene::row(double t, const FloatingState& s, std::span<double> out) {
@@ -263,6 +278,8 @@ void FloatingScene::row(double t, const FloatingState& s, std::span<double> out)
   }
   if (rotor_block_.written) rotor_->channel_values(t, *aero, v.subspan(rotor_block_.first, rotor_block_.count));
   if (blades_block_.written) blades_->channel_values(*s.blades, v.subspan(blades_block_.first, blades_block_.count));
+  if (pitch_block_.written)
+    for (std::size_t b = 0; b < pitch_block_.count; ++b) v[pitch_block_.first + b] = s.held.pitch_rad * 180.0 / std::numbers::pi;
   if (controller_block_.written) {
     std::array<double, 6> c{};
     control::controller_channel_values(s.controller->output, c);

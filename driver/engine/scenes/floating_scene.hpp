@@ -71,7 +71,8 @@ class FloatingScene {
 
   // The state at t = 0: initial conditions, and the flexible blades at their start solution.
   FloatingState make_state();
-  // Advances `s` from t to t + dt (one large step: controller, multibody, blades, sea memory).
+  // Advances `s` from t to t + dt (one large step: multibody, blades, sea memory, then the
+  // controller's demands for the next step).
   void step(double t, double dt, FloatingState& s);
   // The written channels at t (in written() order) of `s`, which it leaves as it is.
   void row(double t, const FloatingState& s, std::span<double> out);
@@ -90,6 +91,7 @@ class FloatingScene {
   class StageLoads;
   ShaftMotion shaft_at(double t, const multibody::State& body);
   RotorDemands demands(const FloatingState& s) const;
+  void sample_controller(double t, double dt, FloatingState& s) const;
 
   multibody::Params structure_;
   multibody::Model model_;
@@ -99,6 +101,7 @@ class FloatingScene {
   std::optional<TurbineBlades> blades_;
   std::unique_ptr<StageLoads> stage_loads_;
   double initial_pitch_rad_ = 0.0;
+  double dt_s_ = 0.0;             // the large step (simulation.dt_s)
   double overspeed_rad_s_ = 0.0;  // 30 % above the built-in law's rated rotor speed (0: unknown)
   std::vector<std::string> input_warnings_;
   std::string sea_description_;  // what coupling_description() says of hydro and mooring
@@ -110,7 +113,7 @@ class FloatingScene {
   };
   std::vector<ChannelInfo> all_, written_;
   std::vector<std::size_t> picked_;                   // indices into all_, in written order
-  Block body_block_, sea_block_, rotor_block_, blades_block_, controller_block_;
+  Block body_block_, sea_block_, rotor_block_, blades_block_, pitch_block_, controller_block_;
   std::vector<std::size_t> controller_source_;        // controller block channel k ← controller_channels()[source[k]]
 
   // Workspace (written before it is read; nothing in it crosses a step).

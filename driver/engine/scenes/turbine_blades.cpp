@@ -320,6 +320,9 @@ std::vector<ChannelInfo> TurbineBlades::channels() const {
     for (int i = 0; i < 3; ++i)
       c.push_back({fmt::format("B{}TipTD{}r", b, axes[i]), "m", fmt::format("BeamDyn: blade {} tip deflection, root frame", b), "blades"});
     c.push_back({fmt::format("BldPitchAct{}", b), "deg", fmt::format("blade {} pitch after the actuator", b), "blades"});
+    c.push_back({fmt::format("BldPitch{}", b), "deg",
+                 fmt::format("blade {} pitch angle (ElastoDyn's BldPitch: the actuator's output, = BldPitchAct{})", b, b),
+                 "blades"});
     if (nodal_deflections_) {
       const beam::BeamModel& model = rotor_.params().blade;
       for (int n = 0; n < model.node_count(); ++n)
@@ -372,6 +375,7 @@ void TurbineBlades::channel_values(const Data& d, std::span<double> out) const {
     for (int i = 0; i < 3; ++i) out[k++] = root[i];
     for (int i = 0; i < 3; ++i) out[k++] = root[3 + i];
     for (int i = 0; i < 3; ++i) out[k++] = o.tip_displacement_m[i];
+    out[k++] = st.pitch_rad[b] * kRadToDeg;
     out[k++] = st.pitch_rad[b] * kRadToDeg;
     if (nodal_deflections_) {
       for (int n = 0; n < model.node_count(); ++n) {

@@ -15,9 +15,11 @@ std::vector<ChannelInfo> controller_channels(const char* module) {
   return {
       {"GenTq", "kN-m", "generator torque demand (HSS), applied without generator dynamics", module},
       {"GenPwr", "kW", "electrical generator power, torque × measured generator speed × efficiency", module},
-      {"BldPitch1", "deg", "blade 1 pitch demand (positive to feather)", module},
-      {"BldPitch2", "deg", "blade 2 pitch demand (positive to feather)", module},
-      {"BldPitch3", "deg", "blade 3 pitch demand (positive to feather)", module},
+      // ServoDyn's names for the command; BldPitch· (the blades' actual pitch, ElastoDyn's) is
+      // the structure's channel.
+      {"BlPitchC1", "deg", "blade 1 pitch command (positive to feather)", module},
+      {"BlPitchC2", "deg", "blade 2 pitch command (positive to feather)", module},
+      {"BlPitchC3", "deg", "blade 3 pitch command (positive to feather)", module},
       {"GenSpeed", "rpm", "measured generator (HSS) speed", module},
   };
 }

@@ -113,7 +113,7 @@ TEST_CASE("state copy reproduces the trajectory; outputs are pure", "[unit][cont
   CHECK(channels[0].name == "GenTq");
   CHECK(channels[0].unit == "kN-m");
   CHECK(channels[1].name == "GenPwr");
-  CHECK(channels[2].name == "BldPitch1");
+  CHECK(channels[2].name == "BlPitchC1");
   CHECK(channels[5].name == "GenSpeed");
   std::array<double, 6> values{};
   ControllerOutput y;
