@@ -10,9 +10,9 @@ namespace fowtsim::driver {
 
 struct RunRequest {
   std::filesystem::path deck_path;                   // top-level scene deck
-  std::optional<std::filesystem::path> output_base;  // -o: output path; a .h5/.out extension is
+  std::optional<std::filesystem::path> output_base;  // -o: output path; a .h5/.out/.outb extension is
                                                      // honoured (see resolve_output_names)
-  std::optional<std::string> output_format;          // --out-format h5|out|both (overrides the deck)
+  std::optional<std::string> output_format;          // --out-format h5|out|outb|both (overrides the deck)
   std::optional<double> t_max_s;                     // --tmax: overrides simulation.t_max_s [s]
   std::optional<double> dt_s;                        // --dt: beam runs' time step (BeamDyn DT, beam decks) [s]
   std::optional<int> beam_segments;                  // --segments: finite volumes per beam

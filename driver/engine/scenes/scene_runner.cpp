@@ -32,7 +32,7 @@ DeckSection<SimulationKeys> simulation_section(const char* step_doc) {
 const DeckSection<OutputKeys>& output_section() {
   static const DeckSection<OutputKeys> section = [] {
     DeckSection<OutputKeys> s;
-    s.key("format", Schema::choice({"h5", "out", "both"}).default_value("h5").doc("HDF5, OpenFAST text .out, or both"),
+    s.key("format", Schema::choice({"h5", "out", "outb", "both"}).default_value("h5").doc("HDF5, OpenFAST text .out, OpenFAST binary .outb, or both (.h5 and .out)"),
           &OutputKeys::format)
         .key("decimation", Schema::integer().at_least(1).default_value(1).doc("write every k-th step (the large step where there are two)"),
              &OutputKeys::decimation)

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <bit>
 #include <cerrno>
 #include <cmath>
@@ -44,6 +45,7 @@ void put(std::string& out, T value) {
 }  // namespace
 
 std::string outb_name_note(const std::vector<ChannelInfo>& channels) {
+  constexpr std::size_t kListed = 8;  // names shown; a turbine's hundreds would swamp the summary
   std::vector<std::string> cut;
   std::map<std::string, std::vector<std::string>> by_cut_name;
   for (const ChannelInfo& c : channels) {
@@ -55,16 +57,18 @@ std::string outb_name_note(const std::vector<ChannelInfo>& channels) {
   for (const ChannelInfo& c : channels)  // an uncut name equal to a cut one clashes too
     if (auto it = by_cut_name.find(c.name); it != by_cut_name.end()) it->second.push_back(c.name);
   if (cut.empty()) return "";
-  std::string text = fmt::format("the .outb holds {} characters per channel name (FileFmtID 3): {} name{} cut:", kOutbNameLength,
-                                 cut.size(), cut.size() == 1 ? "" : "s");
-  for (const std::string& c : cut) text += " " + c + ";";
-  std::string clashes;
-  for (const auto& [short_name, names] : by_cut_name) {
-    if (names.size() < 2) continue;
-    clashes += fmt::format("{} {} ({} columns, in the .h5/.out order)", clashes.empty() ? "" : ";", short_name, names.size());
-  }
-  if (!clashes.empty()) text += " the same name then stands for several channels:" + clashes;
-  else text.pop_back();
+  auto listed = [&](const std::vector<std::string>& items) {
+    std::string text;
+    for (std::size_t i = 0; i < std::min(items.size(), kListed); ++i) text += (i ? ", " : " ") + items[i];
+    if (items.size() > kListed) text += fmt::format(", … ({} more)", items.size() - kListed);
+    return text;
+  };
+  std::string text = fmt::format("the .outb holds {} characters per channel name (FileFmtID 3): {} name{} cut:{}", kOutbNameLength,
+                                 cut.size(), cut.size() == 1 ? "" : "s", listed(cut));
+  std::vector<std::string> clashes;
+  for (const auto& [short_name, names] : by_cut_name)
+    if (names.size() > 1) clashes.push_back(fmt::format("{} ({} columns)", short_name, names.size()));
+  if (!clashes.empty()) text += "; the same name then stands for several channels, in the .h5/.out order:" + listed(clashes);
   return text;
 }
 
