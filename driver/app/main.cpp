@@ -122,6 +122,10 @@ int main(int argc, char** argv) {
                   "the pair: -o x.h5 writes x.h5 and x.out. An extension that contradicts --out-format is an "
                   "error. Files are written as <name>.running.<ext> and renamed when the run ends");
   run->add_option("--out-format", out_format, "output format")->check(CLI::IsMember({"h5", "out", "outb", "both"}));
+  run->add_option("--set", request.deck_settings,
+                  "set a deck key over the deck and its includes, e.g. --set wind.speed_m_s=14 (repeatable; the value "
+                  "is YAML: a number, a word, [a, b] or {k: v}; the deck hash, and so checkpoints, record the settings)")
+      ->allow_extra_args(false);  // one value per --set: the deck after it stays the deck
   run->add_option("--tmax", tmax, "simulated time [s], overrides simulation.t_max_s")
       ->check(positive("a positive number of seconds"));
   double dt = 0;

@@ -20,6 +20,7 @@ struct RunRequest {
   std::optional<int> beam_matrix_max_age;            // --matrix-age: generalized-α step-matrix reuse
   std::optional<double> checkpoint_every_s;          // --checkpoint-every: write <output>.chk every T [s]
   std::optional<std::filesystem::path> restart_path; // --restart: continue from this checkpoint
+  std::vector<std::string> deck_settings;            // --set key.path=value, in order (io::apply_settings)
 };
 
 struct RunReport {

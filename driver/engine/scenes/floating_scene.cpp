@@ -304,7 +304,7 @@ std::string FloatingScene::coupling_description() const {
 }
 
 RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress) {
-  const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), request.deck_path);
+  const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), request.deck_path, request.deck_settings);
   FloatingScene scene(deck);
   FloatingState state = scene.make_state();
   FixedStepScene run;

@@ -120,7 +120,7 @@ Schema platform_scene_schema() {
 }
 
 RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& progress) {
-  const io::ValidatedDeck deck = io::read_deck(platform_scene_schema(), request.deck_path);
+  const io::ValidatedDeck deck = io::read_deck(platform_scene_schema(), request.deck_path, request.deck_settings);
   const Trajectory trajectory = read_trajectory(deck.section("platform_motion"));
   // Wave kinematics at the strip nodes of the mean pose.
   SeaModules sea(deck, platform_motion(trajectory.mean, Vec6::Zero()), simulation_keys(deck).dt_s);

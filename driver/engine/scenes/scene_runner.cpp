@@ -133,6 +133,11 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
   const std::filesystem::path absolute_base = std::filesystem::absolute(base);  // recorded in checkpoints
   OutputSet outputs(base, plan.format);
   scene.metadata.version = kVersion;
+  if (!request.deck_settings.empty()) {  // the deck hash covers them; this says what they were
+    std::string settings;
+    for (const std::string& s : request.deck_settings) settings += (settings.empty() ? "" : "\n") + s;
+    scene.metadata.extra.emplace_back("deck_settings", settings);
+  }
   outputs.begin(scene.written, scene.metadata);
   // t0 + k·dt, not a running sum: every row time is exact to one rounding (and t0 = 0 adds none).
   auto time_of = [&](long step) { return plan.t0_s + static_cast<double>(step) * dt; };
