@@ -10,6 +10,7 @@
 #include "fowtsim/core/error.hpp"
 #include "decks/deck_helpers.hpp"
 #include "decks/deck_section.hpp"
+#include "decks/implausible_values.hpp"
 #include "fowtsim/core/version.hpp"
 #include "run/interrupt.hpp"
 #include "run/earlier_rows.hpp"
@@ -95,6 +96,7 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
   scene.metadata.deck_hash = deck.hash();
   scene.metadata.dt_s = dt;
   scene.metadata.dt_coupling_s = dt;
+  for (std::string& w : implausible_values(deck)) scene.input_warnings.push_back(std::move(w));
   return run_fixed_steps(request, plan, std::move(scene), progress);
 }
 
@@ -161,6 +163,7 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
 
   RunReport report;
   report.warnings = notes;
+  report.warnings.insert(report.warnings.end(), scene.input_warnings.begin(), scene.input_warnings.end());
   // A run far outside sense still runs, but says so (e.g. dt 1e-12 s wrote 600 MB in 60 s).
   const double rows = static_cast<double>(steps - k0) / static_cast<double>(plan.decimation) + 1.0;
   const double bytes = rows * static_cast<double>(scene.written.size() + 1) * (plan.format == "both" ? 2.0 * 8.0 : 8.0);
