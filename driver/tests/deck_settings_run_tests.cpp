@@ -29,7 +29,7 @@ std::string message_of(const std::function<void()>& f) {
 
 }  // namespace
 
-TEST_CASE("--set runs the deck with the keys set, and the output records them", "[unit][run]") {
+TEST_CASE("a run with --set runs the deck with the keys set, and the output records them", "[unit][run]") {
   const auto dir = testing::scratch_dir("set_run");
   RunRequest plain = run_request(toy_deck(), dir / "plain", "h5");
   plain.t_max_s = 2.0;
@@ -44,7 +44,7 @@ TEST_CASE("--set runs the deck with the keys set, and the output records them", 
   CHECK(string_attribute(dir / "set.h5", "deck_hash") != string_attribute(dir / "plain.h5", "deck_hash"));
 }
 
-TEST_CASE("--set errors stop the run before any file, naming the setting and the key", "[unit][run]") {
+TEST_CASE("a run with a wrong --set stops before any file, naming the setting and the key", "[unit][run]") {
   const auto dir = testing::scratch_dir("set_errors");
   RunRequest r = run_request(toy_deck(), dir / "x", "h5");
   r.deck_settings = {"simulation.t_max=3"};

@@ -48,7 +48,7 @@ std::string message_of(const std::function<void()>& f) {
 
 }  // namespace
 
-TEST_CASE("--set sets keys over the deck and its includes, as YAML values", "[unit][deck]") {
+TEST_CASE("settings (--set) set keys over the deck and its includes, as YAML values", "[unit][deck]") {
   const fs::path file = deck_file("scene.yaml");
   const auto deck = fowtsim::io::read_deck(
       scene_schema(), file,
@@ -66,7 +66,7 @@ TEST_CASE("--set sets keys over the deck and its includes, as YAML values", "[un
   CHECK(fowtsim::io::read_deck(scene_schema(), file, {"wind.speed_m_s=3", "wind.speed_m_s=4"}).number("wind.speed_m_s") == 4.0);
 }
 
-TEST_CASE("--set changes the deck hash, by the settings and their order", "[unit][deck]") {
+TEST_CASE("settings (--set) change the deck hash, by the settings and their order", "[unit][deck]") {
   const fs::path file = deck_file("hashed.yaml");
   const std::string plain = fowtsim::io::read_deck(scene_schema(), file).hash();
   const std::string set14 = fowtsim::io::read_deck(scene_schema(), file, {"wind.speed_m_s=14"}).hash();
@@ -79,7 +79,7 @@ TEST_CASE("--set changes the deck hash, by the settings and their order", "[unit
         fowtsim::io::read_deck(scene_schema(), file, {"wind.speed_m_s=2", "wind.speed_m_s=1"}).hash());
 }
 
-TEST_CASE("--set errors name the setting and the key, with the schema's did-you-mean", "[unit][deck]") {
+TEST_CASE("settings (--set): errors name the setting and the key, with the schema's did-you-mean", "[unit][deck]") {
   const fs::path file = deck_file("wrong.yaml");
   auto read = [&](std::vector<std::string> settings) { fowtsim::io::read_deck(scene_schema(), file, settings); };
   CHECK_THAT(message_of([&] { read({"wind.speed=14"}); }),
