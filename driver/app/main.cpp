@@ -119,12 +119,16 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingFile);
   run->add_option("-o,--output", out_base,
-                  "output path (default runs/<deck file name without extension>). -o x.h5 writes x.h5 and -o x.out "
-                  "writes x.out (the extension picks the format over the deck's output.format); without .h5/.out the "
+                  "output path (default runs/<deck file name without extension>). -o x.h5 writes x.h5, -o x.out "
+                  "x.out and -o x.outb x.outb (the extension picks the format over the deck's output.format); without one the "
                   "format's extension is appended (-o x → x.h5). With --out-format both, a given .h5/.out only names "
-                  "the pair: -o x.h5 writes x.h5 and x.out. An extension that contradicts --out-format h5|out is an "
+                  "the pair: -o x.h5 writes x.h5 and x.out. An extension that contradicts --out-format is an "
                   "error. Files are written as <name>.running.<ext> and renamed when the run ends");
-  run->add_option("--out-format", out_format, "output format")->check(CLI::IsMember({"h5", "out", "both"}));
+  run->add_option("--out-format", out_format, "output format")->check(CLI::IsMember({"h5", "out", "outb", "both"}));
+  run->add_option("--set", request.deck_settings,
+                  "set a deck key over the deck and its includes, e.g. --set wind.speed_m_s=14 (repeatable; the value "
+                  "is YAML: a number, a word, [a, b] or {k: v}; the deck hash, and so checkpoints, record the settings)")
+      ->allow_extra_args(false);  // one value per --set: the deck after it stays the deck
   run->add_option("--tmax", tmax, "simulated time [s], overrides simulation.t_max_s")
       ->check(positive("a positive number of seconds"));
   double dt = 0;

@@ -50,7 +50,7 @@ std::filesystem::path file_beside_deck(const io::ValidatedDeck& deck, const std:
 std::string where(const io::ValidatedDeck& deck, const std::string& path) {
   const io::SourceLocation loc = deck.location(path);
   const std::string full = deck.path().empty() ? path : deck.path() + "." + path;
-  return fmt::format("{}:{}:{}: {}", loc.file, loc.line, loc.column, full);
+  return fmt::format("{}: {}", loc.to_string(), full);  // a --set value has no line: just its name
 }
 
 void rethrow_located(const io::ValidatedDeck& section, const InputError& error) {

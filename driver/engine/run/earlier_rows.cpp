@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/io/outb_writer.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "run/output_lock.hpp"
 #include "run/output_set.hpp"
@@ -15,26 +16,30 @@ namespace {
 // The files that may hold the interrupted run's rows, most trusted first.
 std::vector<std::filesystem::path> candidates(const std::filesystem::path& old_base, const OutputSet& outputs) {
   std::vector<std::filesystem::path> files;
-  const std::filesystem::path h5 = old_base.string() + ".h5", out = old_base.string() + ".out";
+  const std::filesystem::path h5 = old_base.string() + ".h5", out = old_base.string() + ".out", outb = old_base.string() + ".outb";
   if (std::filesystem::absolute(old_base).lexically_normal() ==
       std::filesystem::absolute(outputs.paths().front()).replace_extension().lexically_normal()) {
     files = outputs.set_aside();  // our own name: a dead run's temporaries were just moved aside
-    std::stable_partition(files.begin(), files.end(), [](const auto& f) { return f.extension() == ".h5"; });
+    // Lossless first: .h5 and .outb hold every bit, .out 10 digits.
+    std::stable_partition(files.begin(), files.end(), [](const auto& f) { return f.extension() != ".out"; });
   } else {
     if (OutputLock::held_by_another_run(old_base))
       throw InputError({"run", std::nullopt, "--restart", "wait for that run to end"},
                        fmt::format("the run that wrote the checkpoint still writes {}", old_base.string()));
-    files = {running_path(h5), running_path(out)};
+    files = {running_path(h5), running_path(outb), running_path(out)};
   }
   files.push_back(h5);
+  files.push_back(outb);
   files.push_back(out);
   return files;
 }
 
-bool same_channels(const io::ChannelTable& table, const std::vector<ChannelInfo>& channels) {
+// An .outb holds the names cut to io::kOutbNameLength characters.
+bool same_channels(const io::ChannelTable& table, const std::vector<ChannelInfo>& channels, const std::filesystem::path& file) {
   if (table.names.size() != channels.size() + 1) return false;
+  const std::size_t length = file.extension() == ".outb" ? io::kOutbNameLength : std::string::npos;
   for (std::size_t c = 0; c < channels.size(); ++c)
-    if (table.names[c + 1] != channels[c].name) return false;
+    if (table.names[c + 1] != channels[c].name.substr(0, length)) return false;
   return true;
 }
 
@@ -55,8 +60,8 @@ EarlierRows earlier_rows(const std::filesystem::path& old_base, const OutputSet&
       skipped.push_back(fmt::format("{} (unreadable: {})", file.string(), e.what()));
       continue;
     }
-    // Both of our formats carry the deck hash in their header (HDF5 attribute, .out line 3).
-    if (table.description.find(deck_hash) == std::string::npos || !same_channels(table, channels)) {
+    // Our formats carry the deck hash in their header (HDF5 attribute, .out line 3, .outb description).
+    if (table.description.find(deck_hash) == std::string::npos || !same_channels(table, channels, file)) {
       skipped.push_back(fmt::format("{} (another deck or other channels)", file.string()));
       continue;
     }
@@ -83,7 +88,7 @@ EarlierRows earlier_rows(const std::filesystem::path& old_base, const OutputSet&
   if (best_end < t_restart_s - row_interval_s * (1.0 + 1e-9))
     best.notes.push_back(fmt::format("rows between t = {:.6g} s and the checkpoint at {:.6g} s are missing: {} ends there",
                                      best_end, t_restart_s, best.source.string()));
-  if (best.source.extension() == ".out" && outputs.paths().front().extension() == ".h5")
+  if (best.source.extension() == ".out" && outputs.paths().front().extension() != ".out")
     best.notes.push_back("the copied rows come from the text output: rounded to its 10 significant digits");
   return best;
 }

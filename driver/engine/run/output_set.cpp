@@ -8,6 +8,7 @@
 
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/hdf5_writer.hpp"
+#include "fowtsim/io/outb_writer.hpp"
 #include "fowtsim/io/text_out_writer.hpp"
 #include "run/durable_file.hpp"
 
@@ -30,11 +31,13 @@ RunRequest resolve_output_names(const RunRequest& request) {
     if (!r.restart_path) r.output_base = std::filesystem::path("runs") / r.deck_path.stem();
     return r;
   }
-  const auto [base, ext] = split_known_extension(*r.output_base, {".h5", ".out"});
+  const auto [base, ext] = split_known_extension(*r.output_base, {".h5", ".out", ".outb"});
   if (ext.empty()) return r;
-  const std::string named = ext.substr(1);  // "h5" or "out"
-  if (r.output_format && *r.output_format != "both" && *r.output_format != named)
-    throw InputError({"run", std::nullopt, "-o", fmt::format("drop the extension, or use --out-format {} or both", named)},
+  const std::string named = ext.substr(1);  // "h5", "out" or "outb"
+  const bool in_pair = named != "outb";     // "both" is .h5 and .out
+  if (r.output_format && *r.output_format != named && !(*r.output_format == "both" && in_pair))
+    throw InputError({"run", std::nullopt, "-o",
+                      fmt::format("drop the extension, or use --out-format {}{}", named, in_pair ? " or both" : "")},
                      fmt::format("-o {} names a .{} file but --out-format is {}", r.output_base->string(), named,
                                  *r.output_format));
   if (!r.output_format) r.output_format = named;
@@ -61,13 +64,17 @@ std::filesystem::path unfinished_name(const std::filesystem::path& final_path) {
 }
 
 // Disk space to hold back: a full block of rows in every file plus the files' closing records
-// (HDF5: chunk and object-header updates per dataset; text: the status line).
-std::uint64_t reserve_bytes(std::size_t channels, const std::string& format) {
+// (HDF5: chunk and object-header updates per dataset; text: the status line; .outb: nothing, its
+// header is rewritten in place).
+std::uint64_t reserve_bytes(std::size_t channels, const std::vector<std::filesystem::path>& files) {
   constexpr std::uint64_t kRowsPerBlock = 1024, kPerDatasetMetadata = 4096, kMargin = std::uint64_t{1} << 20;
   const std::uint64_t columns = channels + 1;
   std::uint64_t bytes = kMargin;
-  if (format != "out") bytes += columns * (kRowsPerBlock * 8 + kPerDatasetMetadata);
-  if (format != "h5") bytes += columns * kRowsPerBlock * 20;  // " d.dddddddddE+XX\t" per value
+  for (const auto& f : files) {
+    if (f.extension() == ".h5") bytes += columns * (kRowsPerBlock * 8 + kPerDatasetMetadata);
+    if (f.extension() == ".out") bytes += columns * kRowsPerBlock * 20;  // " d.dddddddddE+XX\t" per value
+    if (f.extension() == ".outb") bytes += columns * kRowsPerBlock * 8;
+  }
   return bytes;
 }
 
@@ -76,6 +83,7 @@ std::uint64_t reserve_bytes(std::size_t channels, const std::string& format) {
 OutputSet::OutputSet(const std::filesystem::path& base, const std::string& format) : lock_(base), base_(base) {
   if (format == "h5" || format == "both") paths_.push_back(std::filesystem::path(base.string() + ".h5"));
   if (format == "out" || format == "both") paths_.push_back(std::filesystem::path(base.string() + ".out"));
+  if (format == "outb") paths_.push_back(std::filesystem::path(base.string() + ".outb"));
   for (const auto& p : paths_) {
     if (std::filesystem::is_directory(p))
       throw InputError({"run", std::nullopt, "-o", "a file name, not a folder's"},
@@ -94,6 +102,8 @@ OutputSet::OutputSet(const std::filesystem::path& base, const std::string& forma
   for (const auto& p : running_paths_) {
     if (p.extension() == ".h5")
       sinks_.push_back(std::make_unique<io::Hdf5Writer>(p));
+    else if (p.extension() == ".outb")
+      sinks_.push_back(std::make_unique<io::OutbWriter>(p));
     else
       sinks_.push_back(std::make_unique<io::TextOutWriter>(p));
   }
@@ -128,8 +138,10 @@ void OutputSet::guarded(Write&& write) {
 }
 
 void OutputSet::begin(const std::vector<ChannelInfo>& channels, const io::RunMetadata& metadata) {
-  const std::string format = paths_.size() == 2 ? "both" : paths_.front().extension() == ".h5" ? "h5" : "out";
-  reserve_ = DiskReserve(running_path(std::filesystem::path(base_.string() + ".reserve")), reserve_bytes(channels.size(), format));
+  reserve_ = DiskReserve(running_path(std::filesystem::path(base_.string() + ".reserve")), reserve_bytes(channels.size(), paths_));
+  for (const auto& p : paths_)
+    if (p.extension() == ".outb")
+      if (const std::string note = io::outb_name_note(channels); !note.empty()) notes_.push_back(p.string() + ": " + note);
   guarded([&] {
     for (auto& sink : sinks_) sink->begin(channels, metadata);
   });

@@ -26,11 +26,11 @@ namespace fowtsim::driver {
 
 // Output names of a request: no -o gives runs/<deck file stem> (bd_driver.inp → runs/bd_driver),
 // except for a restart, whose output is the checkpoint's run's own (left unset here);
-// an -o ending in .h5 or .out is taken as the file name: its extension is removed from
+// an -o ending in .h5, .out or .outb is taken as the file name: its extension is removed from
 // output_base and, when --out-format is absent, picks the format (overriding the deck's
 // output.format); with --out-format both it only names the pair (x.h5 → x.h5 and x.out). An
-// extension that contradicts --out-format h5|out is an InputError. Other extensions are kept
-// (x.v2 → x.v2.h5).
+// extension that contradicts --out-format (including .outb with both) is an InputError. Other
+// extensions are kept (x.v2 → x.v2.h5).
 RunRequest resolve_output_names(const RunRequest& request);
 
 // `path` without a trailing extension from `extensions` (compared case-insensitively), and that
@@ -43,9 +43,9 @@ std::filesystem::path running_path(const std::filesystem::path& final_path);
 
 class OutputSet {
  public:
-  // format: "h5", "out" or "both"; files are base + ".h5" / ".out"; the folder is created. Takes
-  // the lock and moves a dead run's temporaries aside; a final name that is a folder is an
-  // InputError. Creates no output file yet.
+  // format: "h5", "out", "outb" or "both" (.h5 and .out); files are base + ".h5" / ".out" /
+  // ".outb"; the folder is created. Takes the lock and moves a dead run's temporaries aside; a
+  // final name that is a folder is an InputError. Creates no output file yet.
   OutputSet(const std::filesystem::path& base, const std::string& format);
   // Without finish(): the writers close their files (status "incomplete"); files holding at
   // least one row get their final name, files without any are removed. Never throws.
@@ -54,7 +54,7 @@ class OutputSet {
   OutputSet& operator=(const OutputSet&) = delete;
 
   // Holds back disk space for closing the files (fowtsim::Error if the disk cannot spare it), then
-  // creates them.
+  // creates them. An .outb's cut channel names are added to notes().
   void begin(const std::vector<ChannelInfo>& channels, const io::RunMetadata& metadata);
   // A write that fails frees the held-back space first, so the rows stay buffered for finish();
   // the error then says whether the disk is full.

@@ -71,12 +71,13 @@ void reject_foreign_input(const std::filesystem::path& path) {
 // The scene key of the deck's top-level mapping (kSceneKeys); a file that is not YAML, is empty,
 // or holds none of them (a component deck such as hydro.yaml) stops here, saying which keys make a
 // scene. The deck is loaded once here; the scene then reads it against its schema.
-std::string scene_key(const std::filesystem::path& path) {
+std::string scene_key(const std::filesystem::path& path, const std::vector<std::string>& settings) {
   const std::string ext = lower_extension(path);
   const bool yaml_named = ext == ".yaml" || ext == ".yml";
   io::LoadedDeck loaded;
   try {
     loaded = io::load_deck(path);
+    io::apply_settings(loaded, settings);
   } catch (const io::DeckError& e) {
     const bool syntax = std::any_of(e.issues().begin(), e.issues().end(),
                                     [](const io::DeckIssue& i) { return i.kind == io::DeckIssueKind::yaml_syntax; });
@@ -115,13 +116,18 @@ std::string scene_key(const std::filesystem::path& path) {
 }
 
 RunReport run_picked_scene(const RunRequest& request, const ProgressCallback& progress) {
-  if (is_beamdyn_driver_file(request.deck_path)) return run_beamdyn_case(request, progress);
+  if (is_beamdyn_driver_file(request.deck_path)) {
+    if (!request.deck_settings.empty())
+      throw InputError({"run", std::nullopt, "--set", "a YAML deck (a beam deck: inputs/beams/rollup.yaml)"},
+                       fmt::format("--set {}: a BeamDyn driver input has no deck keys to set", request.deck_settings.front()));
+    return run_beamdyn_case(request, progress);
+  }
   reject_foreign_input(request.deck_path);
-  const std::string scene = scene_key(request.deck_path);
+  const std::string scene = scene_key(request.deck_path, request.deck_settings);
   if (scene == "beam") return run_beam_scene(request, progress);
   if (scene == "platform_motion") return run_platform_scene(request, progress);
   if (scene == "structure") return run_floating_scene(request, progress);
-  const io::ValidatedDeck deck = io::read_deck(toy_scene_schema(), request.deck_path);
+  const io::ValidatedDeck deck = io::read_deck(toy_scene_schema(), request.deck_path, request.deck_settings);
   return run_toy_scene(deck, request, progress);
 }
 

@@ -10,9 +10,9 @@ namespace fowtsim::driver {
 
 struct RunRequest {
   std::filesystem::path deck_path;                   // top-level scene deck
-  std::optional<std::filesystem::path> output_base;  // -o: output path; a .h5/.out extension is
+  std::optional<std::filesystem::path> output_base;  // -o: output path; a .h5/.out/.outb extension is
                                                      // honoured (see resolve_output_names)
-  std::optional<std::string> output_format;          // --out-format h5|out|both (overrides the deck)
+  std::optional<std::string> output_format;          // --out-format h5|out|outb|both (overrides the deck)
   std::optional<double> t_max_s;                     // --tmax: overrides simulation.t_max_s [s]
   std::optional<double> dt_s;                        // --dt: beam runs' time step (BeamDyn DT, beam decks) [s]
   std::optional<int> beam_segments;                  // --segments: finite volumes per beam
@@ -20,6 +20,7 @@ struct RunRequest {
   std::optional<int> beam_matrix_max_age;            // --matrix-age: generalized-α step-matrix reuse
   std::optional<double> checkpoint_every_s;          // --checkpoint-every: write <output>.chk every T [s]
   std::optional<std::filesystem::path> restart_path; // --restart: continue from this checkpoint
+  std::vector<std::string> deck_settings;            // --set key.path=value, in order (io::apply_settings)
 };
 
 struct RunReport {

@@ -92,7 +92,7 @@ Schema beam_scene_schema() {
 }
 
 RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& progress) {
-  const io::ValidatedDeck deck = io::read_deck(beam_scene_schema(), request.deck_path);
+  const io::ValidatedDeck deck = io::read_deck(beam_scene_schema(), request.deck_path, request.deck_settings);
   BeamKeys beam;
   beam_keys().read_into(deck.section("beam"), beam);
   SceneKeys keys;

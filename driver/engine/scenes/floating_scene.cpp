@@ -18,6 +18,7 @@
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/multibody/multibody.hpp"
 #include "run/channel_selection.hpp"
+#include "scenes/record_length_warnings.hpp"
 #include "scenes/scene_runner.hpp"
 
 namespace fowtsim::driver {
@@ -323,13 +324,17 @@ std::string FloatingScene::coupling_description() const {
 }
 
 RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress) {
-  const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), request.deck_path);
+  const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), request.deck_path, request.deck_settings);
   FloatingScene scene(deck);
   FloatingState state = scene.make_state();
   FixedStepScene run;
   run.written = scene.written();
   run.metadata.seeds = scene.seeds();
   run.metadata.extra = {{"scene", "floating"}};
+  // A blade tip reaches about one tip radius (plus the overhang) upwind of the tower axis.
+  const double upwind_reach_m = deck.number("structure.rotor.tip_radius_m") + std::abs(deck.number("structure.nacelle.overhang_m"));
+  run.input_warnings = record_length_warnings(scene.wind(), upwind_reach_m, scene.sea().incident_waves(),
+                                              request.t_max_s.value_or(simulation_keys(deck).t_max_s));
   run.step = [&](double t, double dt) { scene.step(t, dt, state); };
   run.row = [&](double t, std::span<double> row) { scene.row(t, state, row); };
   if (scene.can_checkpoint()) {  // the scene state whole, through its field lists

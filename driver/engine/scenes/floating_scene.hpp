@@ -85,6 +85,9 @@ class FloatingScene {
   // The last call a DISCON library gets, at the end of the run (or a failure at t = 0).
   void finish(double t, FloatingState& s) const;
   std::string coupling_description() const;
+  // The inflow (null without aerodynamics) and the sea, for checks of the records they read.
+  const wind::WindField* wind() const { return rotor_ ? &rotor_->wind() : nullptr; }
+  const SeaModules& sea() const { return *sea_; }
   int substeps() const { return blades_ ? blades_->substeps() : 1; }  // small steps per large step
 
  private:

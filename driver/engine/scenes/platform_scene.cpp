@@ -12,6 +12,7 @@
 #include "fowtsim/core/rotation.hpp"
 #include "run/channel_selection.hpp"
 #include "scenes/scene_runner.hpp"
+#include "scenes/record_length_warnings.hpp"
 #include "scenes/sea_modules.hpp"
 
 namespace fowtsim::driver {
@@ -122,7 +123,7 @@ Schema platform_scene_schema() {
 }
 
 RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& progress) {
-  const io::ValidatedDeck deck = io::read_deck(platform_scene_schema(), request.deck_path);
+  const io::ValidatedDeck deck = io::read_deck(platform_scene_schema(), request.deck_path, request.deck_settings);
   const Trajectory trajectory = read_trajectory(deck.section("platform_motion"));
   // Wave kinematics at the strip nodes of the mean pose.
   SeaModules sea(deck, platform_motion(trajectory.mean, Vec6::Zero()), simulation_keys(deck).dt_s);
@@ -166,6 +167,7 @@ RunReport run_platform_scene(const RunRequest& request, const ProgressCallback& 
     }
     scene.metadata.extra.push_back({"mooring_stiffness_6x6", flat});
   }
+  scene.input_warnings = record_length_warnings(nullptr, 0.0, sea.incident_waves(), request.t_max_s.value_or(simulation_keys(deck).t_max_s));
   RunReport report = run_fixed_steps(request, deck, std::move(scene), progress);
   report.coupling = "prescribed motion";
   if (!stiffness_rows.empty()) {

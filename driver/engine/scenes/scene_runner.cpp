@@ -10,6 +10,7 @@
 #include "fowtsim/core/error.hpp"
 #include "decks/deck_helpers.hpp"
 #include "decks/deck_section.hpp"
+#include "decks/implausible_values.hpp"
 #include "fowtsim/core/version.hpp"
 #include "run/interrupt.hpp"
 #include "run/earlier_rows.hpp"
@@ -32,7 +33,7 @@ DeckSection<SimulationKeys> simulation_section(const char* step_doc) {
 const DeckSection<OutputKeys>& output_section() {
   static const DeckSection<OutputKeys> section = [] {
     DeckSection<OutputKeys> s;
-    s.key("format", Schema::choice({"h5", "out", "both"}).default_value("h5").doc("HDF5, OpenFAST text .out, or both"),
+    s.key("format", Schema::choice({"h5", "out", "outb", "both"}).default_value("h5").doc("HDF5, OpenFAST text .out, OpenFAST binary .outb, or both (.h5 and .out)"),
           &OutputKeys::format)
         .key("decimation", Schema::integer().at_least(1).default_value(1).doc("write every k-th step (the large step where there are two)"),
              &OutputKeys::decimation)
@@ -95,6 +96,7 @@ RunReport run_fixed_steps(const RunRequest& request, const io::ValidatedDeck& de
   scene.metadata.deck_hash = deck.hash();
   scene.metadata.dt_s = dt;
   scene.metadata.dt_coupling_s = dt;
+  for (std::string& w : implausible_values(deck)) scene.input_warnings.push_back(std::move(w));
   return run_fixed_steps(request, plan, std::move(scene), progress);
 }
 
@@ -133,6 +135,11 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
   const std::filesystem::path absolute_base = std::filesystem::absolute(base);  // recorded in checkpoints
   OutputSet outputs(base, plan.format);
   scene.metadata.version = kVersion;
+  if (!request.deck_settings.empty()) {  // the deck hash covers them; this says what they were
+    std::string settings;
+    for (const std::string& s : request.deck_settings) settings += (settings.empty() ? "" : "\n") + s;
+    scene.metadata.extra.emplace_back("deck_settings", settings);
+  }
   outputs.begin(scene.written, scene.metadata);
   // t0 + k·dt, not a running sum: every row time is exact to one rounding (and t0 = 0 adds none).
   auto time_of = [&](long step) { return plan.t0_s + static_cast<double>(step) * dt; };
@@ -156,6 +163,7 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
 
   RunReport report;
   report.warnings = notes;
+  report.warnings.insert(report.warnings.end(), scene.input_warnings.begin(), scene.input_warnings.end());
   // A run far outside sense still runs, but says so (e.g. dt 1e-12 s wrote 600 MB in 60 s).
   const double rows = static_cast<double>(steps - k0) / static_cast<double>(plan.decimation) + 1.0;
   const double bytes = rows * static_cast<double>(scene.written.size() + 1) * (plan.format == "both" ? 2.0 * 8.0 : 8.0);

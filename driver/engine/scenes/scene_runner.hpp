@@ -42,6 +42,9 @@ struct FixedStepScene {
   std::function<void(double t, std::span<double> row)> row;  // values of `written` at t
   // What the scene warns about at the end of the run (summary and HDF5); may be empty.
   std::function<void(std::vector<std::string>& warnings)> warnings;
+  // What its inputs warn about before the first step (implausible values, records shorter than the
+  // run): in the summary and the outputs even of a run that fails.
+  std::vector<std::string> input_warnings;
   // The scene's whole changing state, for checkpoints and restarts (empty: not supported).
   std::function<void(CheckpointWriter&)> save;
   std::function<void(CheckpointReader&)> load;

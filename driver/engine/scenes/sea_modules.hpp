@@ -58,6 +58,8 @@ class SeaModules {
   Mat6 mooring_stiffness(const FrameMotion& pose) const;
   // Inputs far outside sense, for the run summary: a sea steeper than the breaking limit.
   std::vector<std::string> warnings() const;
+  // The incident sea's parameters, or null in still water without a `waves` section.
+  const waves::WaveParams* incident_waves() const { return has_waves_ ? &wave_params_ : nullptr; }
   // Random seeds in use (the wave seed, when there is a sea).
   std::vector<std::uint64_t> seeds() const;
 

@@ -1,5 +1,7 @@
 #include "fowtsim/io/deck.hpp"
 
+#include "deck_merge.hpp"
+
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
@@ -92,9 +94,9 @@ std::string child_path(const std::string& parent, const std::string& key) {
   return parent.empty() ? key : parent + "." + key;
 }
 
-// Deep merge of DESIGN.md §5: keys of `over` replace those of `base`, except that two mappings
-// under the same key merge recursively. Both arguments are mappings.
-void merge_into(DeckNode& base, DeckNode over) {
+}  // namespace
+
+void detail::merge_into(DeckNode& base, DeckNode over) {
   for (DeckEntry& entry : over.entries) {
     auto same_key = std::find_if(base.entries.begin(), base.entries.end(),
                                  [&](const DeckEntry& e) { return e.key == entry.key; });
@@ -110,10 +112,32 @@ void merge_into(DeckNode& base, DeckNode over) {
   base.location = over.location;  // the mapping is where its overriding keys are written
 }
 
+namespace {
+
+using detail::merge_into;
+
 // Converts yaml-cpp nodes into DeckNodes, following includes. Problems are collected in
 // `issues` so that one run reports them all; a file that fails is left out of the tree.
 class Loader {
  public:
+  // One YAML value given as text (not a file), located at `origin`.
+  DeckNode load_text(const std::string& text, const std::string& origin, const std::string& path) {
+    DeckNode node;
+    try {
+      node = convert(YAML::Load(text), origin, path, {origin, 0, 0});
+    } catch (const YAML::Exception& error) {
+      DeckIssue issue;  // built field by field: GCC 12 warns of an aggregate here (maybe-uninitialized)
+      issue.kind = DeckIssueKind::yaml_syntax;
+      issue.location = SourceLocation{origin, 0, 0};
+      issue.path = path;
+      issue.found = error.msg;
+      issue.expected = "a YAML value";
+      add(std::move(issue));
+    }
+    if (!issues_.empty()) throw DeckError(std::move(issues_));
+    return node;
+  }
+
   LoadedDeck load(const fs::path& top) {
     LoadedDeck deck;
     if (std::optional<DeckNode> root = load_file(top, {top.string(), 0, 0}, "", "")) {
@@ -329,6 +353,10 @@ class Loader {
 }  // namespace
 
 LoadedDeck load_deck(const fs::path& file) { return Loader().load(file); }
+
+DeckNode detail::parse_yaml_value(const std::string& text, const std::string& origin, const std::string& path) {
+  return Loader().load_text(text, origin, path);
+}
 
 std::string deck_hash(const std::vector<fs::path>& files) {
   std::uint64_t hash = fnv1a_64_offset;

@@ -38,6 +38,7 @@ static_assert(std::endian::native == std::endian::little,
               "the .outb reader assumes a little-endian host, like the files OpenFAST writes");
 
 constexpr const char* kModule = "io.openfast_binary";
+constexpr const char* kStatusMark = "; Status: ";
 
 enum FileFormat : std::int16_t {
   kWithTime = 1,
@@ -120,7 +121,7 @@ ChannelTable read_openfast_binary(const std::filesystem::path& path) {
                         channel_count, step_count));
   }
   const auto channels = static_cast<std::size_t>(channel_count);
-  const auto steps = static_cast<std::size_t>(step_count);
+  auto steps = static_cast<std::size_t>(step_count);
   const auto time_a = in.read<double>(format == kWithTime ? "TimeScl" : "TimeOut1");
   const auto time_b = in.read<double>(format == kWithTime ? "TimeOff" : "TimeIncr");
   std::vector<float> scale;
@@ -134,6 +135,9 @@ ChannelTable read_openfast_binary(const std::filesystem::path& path) {
 
   ChannelTable table;
   table.description = trim_blanks(in.read_text(static_cast<std::size_t>(description_length), "DescStr"));
+  // Ours (OutbWriter) end the description with "Status: <how the run ended>".
+  if (const auto at = table.description.rfind(kStatusMark); at != std::string::npos)
+    table.status = trim_blanks(table.description.substr(at + std::strlen(kStatusMark)));
   for (std::size_t c = 0; c <= channels; ++c) {
     table.names.push_back(trim_blanks(in.read_text(static_cast<std::size_t>(name_length), "ChanName")));
   }
@@ -148,9 +152,32 @@ ChannelTable read_openfast_binary(const std::filesystem::path& path) {
   }
   const std::size_t time_bytes = format == kWithTime ? steps * sizeof(std::int32_t) : 0;
   const std::size_t value_bytes = format == kNoCompressWithoutTime ? sizeof(double) : sizeof(std::int16_t);
-  if (in.remaining() != time_bytes + steps * channels * value_bytes) {
+  const std::size_t expected_bytes = time_bytes + steps * channels * value_bytes;
+  if (in.remaining() < expected_bytes) {
     in.fail(fmt::format("{} data bytes after the header, expected {} for {} channels x {} steps",
-                        in.remaining(), time_bytes + steps * channels * value_bytes, channels, steps));
+                        in.remaining(), expected_bytes, channels, steps));
+  }
+  if (in.remaining() > expected_bytes) {
+    // A writer that appends rows and then updates NT (ours, OutbWriter) leaves more rows than NT
+    // says when it is killed between the two writes: with uniform time the rows after NT are read
+    // as well (their times follow from TimeOut1 and TimeIncr); a last row cut short is dropped.
+    // With packed time (FileID 1) the time array sits before the data, sized by NT: nothing to add.
+    const std::size_t row_bytes = channels * value_bytes;
+    if (format == kWithTime || row_bytes == 0) {
+      in.fail(fmt::format("{} data bytes after the header, expected {} for {} channels x {} steps",
+                          in.remaining(), expected_bytes, channels, steps));
+    }
+    const std::size_t whole_rows = in.remaining() / row_bytes;
+    const std::string rows_found = fmt::format("the header says {} rows but the file holds {} whole rows{}", steps, whole_rows,
+                                               in.remaining() % row_bytes ? " and part of one" : "");
+    if (time_b > 0.0) {
+      table.warnings.push_back(
+          fmt::format("{}: {} (a writer stopped before updating its header?): all {} read", name, rows_found, whole_rows));
+      steps = whole_rows;
+    } else {  // no interval in the header yet (it had at most one row): the rows after it have no time
+      table.warnings.push_back(
+          fmt::format("{}: {}, without a time interval in the header: the {} rows it counts are read", name, rows_found, steps));
+    }
   }
 
   table.columns.assign(channels + 1, std::vector<double>(steps));

@@ -200,8 +200,10 @@ ValidatedDeck validate(const Schema& schema, LoadedDeck deck) {
   return ValidatedDeck(shared, &shared->schema, &shared->root);
 }
 
-ValidatedDeck read_deck(const Schema& schema, const std::filesystem::path& file) {
-  return validate(schema, load_deck(file));
+ValidatedDeck read_deck(const Schema& schema, const std::filesystem::path& file, const std::vector<std::string>& settings) {
+  LoadedDeck deck = load_deck(file);
+  apply_settings(deck, settings);
+  return validate(schema, std::move(deck));
 }
 
 }  // namespace fowtsim::io

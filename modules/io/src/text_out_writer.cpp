@@ -12,23 +12,11 @@
 #include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
+#include "status_field.hpp"
 
 namespace fowtsim::io {
-namespace {
 
-constexpr std::size_t kStatusWidth = 160;  // characters of header line 5 after "Status: "
-
-// The status as it fits in line 5: one line, at most kStatusWidth characters, padded with blanks
-// so that rewriting it never moves the rows after it.
-std::string status_field(std::string status) {
-  for (char& c : status)
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-  if (status.size() > kStatusWidth) status = status.substr(0, kStatusWidth - 3) + "...";
-  status.resize(kStatusWidth, ' ');
-  return status;
-}
-
-}  // namespace
+using detail::status_field;
 
 struct TextOutWriter::Impl {
   enum class Phase { created, open, finished };

@@ -96,6 +96,17 @@ struct LoadedDeck {
 // duplicate key.
 LoadedDeck load_deck(const std::filesystem::path& file);
 
+// Sets `key.path=value` settings (the command line's `--set`, in order) over a loaded deck, as a
+// sweep case deck sets its keys over its base deck: the value is YAML (a scalar, or a flow sequence
+// `[1, 2]` or mapping `{a: 1}`), mappings on the way are created or merged key by key, anything
+// else under the key is replaced. Every node a setting brings is located at "--set key.path", so a
+// later schema check names the setting and the key (an unknown key with its "did you mean"). A
+// relative file path in a value is taken from the current folder. The deck's hash continues over
+// the settings: a run with settings is traced (and restarted) as a deck of its own. Throws
+// InputError naming the setting if it is not `key.path=value` with dotted plain keys, DeckError if
+// its value is not YAML.
+void apply_settings(LoadedDeck& deck, const std::vector<std::string>& settings);
+
 // FNV-1a 64-bit of `bytes`, continuing from `hash` so several buffers chain into one digest.
 inline constexpr std::uint64_t fnv1a_64_offset = 0xcbf29ce484222325ULL;
 std::uint64_t fnv1a_64(std::string_view bytes, std::uint64_t hash = fnv1a_64_offset);

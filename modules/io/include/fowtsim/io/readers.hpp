@@ -18,6 +18,10 @@ ChannelTable read_openfast_text(const std::filesystem::path& path);
 // OpenFAST binary output (.outb), every FileFmtID that OpenFAST writes: 1 (packed int16 data with
 // packed int32 time), 2 (packed int16, uniform time), 3 (float64, uniform time), 4 (as 2, with the
 // channel-name length in the file). Values are unpacked to double: (packed - ColOff) / ColScl.
+// A file holding more rows than its header's NT (a writer killed between appending rows and
+// counting them, see outb_writer.hpp) is read whole when its time step is in the header (FileID
+// 2–4), with a warning; a last row cut short is dropped. A description ending in "; Status: …"
+// (ours) gives the table's status.
 ChannelTable read_openfast_binary(const std::filesystem::path& path);
 
 // Our HDF5 output (see hdf5_writer.hpp): Time, then the other channels in creation order. A file

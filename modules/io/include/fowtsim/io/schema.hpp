@@ -142,8 +142,9 @@ class ValidatedDeck {
 // out-of-range value and bad choice; throws one DeckError listing them all.
 ValidatedDeck validate(const Schema& schema, LoadedDeck deck);
 
-// load_deck then validate: the usual way to read a scene.
-ValidatedDeck read_deck(const Schema& schema, const std::filesystem::path& file);
+// load_deck, apply_settings (the command line's --set) then validate: the usual way to read a scene.
+ValidatedDeck read_deck(const Schema& schema, const std::filesystem::path& file,
+                        const std::vector<std::string>& settings = {});
 
 // The schema as documentation, one entry per key path: type with range and unit, whether it is
 // required, optional or its default, and its doc line (for `fowtsim --help-deck`).
