@@ -80,6 +80,8 @@ TEST_CASE("sweep presets: DLC 1.2 expands speeds × six NTM seeds with the norma
   CHECK(override_of(cases[6], "wind.speed_m_s") == "12");
   CHECK(override_of(cases[6], "simulation.t_max_s") == "720");  // 120 s transient + 600 s analysed by default
   CHECK(override_of(cases[6], "waves.duration_s") == "720");
+  // The box outlasts the run by the time it needs to pass the rotor: ⌈145 m / 12 m/s⌉ = 13 s.
+  CHECK(override_of(cases[6], "wind.turbulence.duration_s") == "733");
   // Every realisation has its own wind and wave seeds, written into its deck.
   std::set<std::uint64_t> seeds;
   for (const SweepCase& c : cases) {

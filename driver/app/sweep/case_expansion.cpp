@@ -1,6 +1,7 @@
 #include "sweep/case_expansion.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <charconv>
 #include <set>
@@ -128,6 +129,8 @@ BaseDeckFacts read_base_deck_facts(const std::filesystem::path& base_deck) {
     const io::DeckNode* model = wind->find("model");
     facts.wind_model = model ? model->scalar : "steady";  // the wind schema's default
     if (const io::DeckNode* speed = find_path(loaded.root, {"wind", "speed_m_s"})) facts.wind_speed_m_s = parse_number(speed->scalar);
+    if (const io::DeckNode* width = find_path(loaded.root, {"wind", "turbulence", "width_m"}))
+      facts.turbulence_width_m = parse_number(width->scalar).value_or(0.0);
   }
   if (const io::DeckNode* waves = loaded.root.find("waves")) {
     const io::DeckNode* model = waves->find("model");
@@ -183,7 +186,14 @@ std::vector<SweepCase> expand_cases(const SweepSpec& spec, const BaseDeckFacts& 
         if (wind_model == "turbulent") {
           c.wind_seed = case_seed(canonical, "wind");
           deck.set("wind.turbulence.seed", std::to_string(*c.wind_seed));
-          deck.set("wind.turbulence.duration_s", number_text(total_s));  // no periodic repeat inside the run
+          // No periodic repeat inside the run: the box must also pass the rotor first, (X0 + reach)/U
+          // with X0 half the grid's width (wind/record_length.hpp); the whole width bounds it, since
+          // the rotor fits in the grid.
+          const std::optional<std::string> width_text = deck.value_of("wind.turbulence.width_m");
+          const double width_m = width_text ? parse_number(*width_text).value_or(0.0) : base.turbulence_width_m;
+          const double speed = c.wind_speed_m_s.value_or(0.0);
+          const double lead_s = speed > 0.0 ? std::ceil(width_m / speed) : 0.0;
+          deck.set("wind.turbulence.duration_s", number_text(total_s + lead_s));
         }
         if (g.sea_state.kind != SeaStateSpec::Kind::from_base_deck) {
           if (g.sea_state.kind != SeaStateSpec::Kind::fixed && !c.wind_speed_m_s) {

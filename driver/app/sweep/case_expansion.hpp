@@ -38,6 +38,7 @@ struct SweepCase {
 struct BaseDeckFacts {
   std::string wind_model;                 // wind.model ("" without a wind section)
   std::optional<double> wind_speed_m_s;   // wind.speed_m_s
+  double turbulence_width_m = 0.0;        // wind.turbulence.width_m (0: not given)
   std::string wave_model;                 // waves.model ("" without a waves section)
   BaseController controller;              // its type and pitch limit (the parked preset)
 };
