@@ -51,3 +51,6 @@ done
 for p in "${pids[@]}"; do wait "$p"; done
 grep -h "real-time" "$out"/*.log || true
 /usr/bin/python3 "$here/compare.py" "$reference" "$out"
+# Every OpenFAST-named channel we write and the check that covers its meaning (issue 23).
+/usr/bin/python3 "$here/channel_definitions.py" "$(cd "$root/.." && pwd)/shared/reference/openfast-runs" "$reference" \
+  "$out/wamit_ua_tower.out"
