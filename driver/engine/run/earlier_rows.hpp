@@ -19,7 +19,7 @@ struct EarlierRows {
   std::vector<std::string> notes;    // for the summary: where the rows came from, what is missing
 };
 
-// Looks for the interrupted run's output `old_base` (.h5 first, then .out; the temporaries of a
+// Looks for the interrupted run's output `old_base` (.h5 first, then .outb, then .out; the temporaries of a
 // run that died; when old_base is this run's own name, the temporaries `outputs` set aside) of
 // the same deck (`deck_hash`) and the same channels, and returns its rows before `t_restart_s`.
 // A file whose rows stop more than `row_interval_s` before the restart leaves a gap, said in the

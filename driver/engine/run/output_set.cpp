@@ -53,13 +53,17 @@ std::filesystem::path running_path(const std::filesystem::path& final_path) {
 
 namespace {
 
-// Where a dead run's temporary is kept: x.unfinished.h5, or x.unfinished.2.h5, … if taken.
-std::filesystem::path unfinished_name(const std::filesystem::path& final_path) {
-  const std::string stem = final_path.stem().string(), ext = final_path.extension().string();
+// Where a dead run's temporaries are kept: x.unfinished.h5 (and .out, .outb), or x.unfinished.2.*,
+// … — one number for the set, the first under which none of its files exists.
+std::vector<std::filesystem::path> unfinished_names(const std::vector<std::filesystem::path>& final_paths) {
   for (int n = 1;; ++n) {
-    std::filesystem::path p = final_path;
-    p.replace_filename(stem + ".unfinished" + (n == 1 ? "" : fmt::format(".{}", n)) + ext);
-    if (!std::filesystem::exists(p)) return p;
+    std::vector<std::filesystem::path> names;
+    for (const auto& f : final_paths) {
+      std::filesystem::path p = f;
+      p.replace_filename(f.stem().string() + ".unfinished" + (n == 1 ? "" : fmt::format(".{}", n)) + f.extension().string());
+      names.push_back(p);
+    }
+    if (std::none_of(names.begin(), names.end(), [](const auto& p) { return std::filesystem::exists(p); })) return names;
   }
 }
 
@@ -91,9 +95,11 @@ OutputSet::OutputSet(const std::filesystem::path& base, const std::string& forma
     running_paths_.push_back(running_path(p));
   }
   // Holding the lock, a temporary already there belongs to a run that died without closing it.
-  for (const auto& p : running_paths_) {
+  const std::vector<std::filesystem::path> unfinished = unfinished_names(paths_);
+  for (std::size_t i = 0; i < running_paths_.size(); ++i) {
+    const std::filesystem::path& p = running_paths_[i];
     if (!std::filesystem::exists(p)) continue;
-    const std::filesystem::path kept = unfinished_name(p.parent_path() / (base.filename().string() + p.extension().string()));
+    const std::filesystem::path& kept = unfinished[i];
     std::filesystem::rename(p, kept);
     set_aside_.push_back(kept);
     notes_.push_back(fmt::format("{} was left by a run that stopped without closing it (killed?): kept as {}", p.string(),

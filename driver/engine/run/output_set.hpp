@@ -1,5 +1,5 @@
 #pragma once
-// The output files of one run (HDF5 and/or OpenFAST text), fed together, and how their names are
+// The output files of one run (HDF5, OpenFAST text .out, OpenFAST binary .outb), fed together, and how their names are
 // chosen. A run owns its files:
 // - it holds the name's lock (run/output_lock.hpp) from before the first file is touched to the
 //   end, so a second run on the same name stops at once and names the holder;

@@ -155,9 +155,9 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   add_block(sea_block_, sea_->channels());
   if (rotor_) add_block(rotor_block_, rotor_->channels());
   if (blades_) add_block(blades_block_, blades_->channels());
-  if (!blades_) {  // rigid blades turn to the held pitch at once (flexible ones: their actuator's channels)
+  if (!blades_ && (rotor_ || controller_)) {  // rigid blades turn to the held pitch at once (flexible ones: their actuator's)
     std::vector<ChannelInfo> pitch;
-    for (int b = 1; b <= 3; ++b)
+    for (int b = 1; b <= model_.blade_count; ++b)
       pitch.push_back({fmt::format("BldPitch{}", b), "deg",
                        fmt::format("blade {} pitch angle (ElastoDyn's BldPitch): the demand held over the step", b), "structure"});
     add_block(pitch_block_, pitch);

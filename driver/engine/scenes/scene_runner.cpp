@@ -112,10 +112,15 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
                      "oscillators do)");
   if (request.checkpoint_every_s) {
     checkpoint_steps = std::lround(*request.checkpoint_every_s / dt);
-    if (checkpoint_steps < 1 || std::abs(checkpoint_steps * dt - *request.checkpoint_every_s) > 1e-9 * *request.checkpoint_every_s)
-      throw InputError({"scene", std::nullopt, "--checkpoint-every", fmt::format("a multiple of dt_s = {:.10g} s", dt)},
-                       fmt::format("--checkpoint-every {:.10g} is not a whole number of steps of {:.10g} s",
-                                   *request.checkpoint_every_s, dt));
+    // A multiple of the row interval too: a restart's output then continues the rows exactly
+    // (its first row, at the checkpoint, is one the uninterrupted run writes).
+    const double row_interval = static_cast<double>(plan.decimation) * dt;
+    if (checkpoint_steps < 1 || std::abs(checkpoint_steps * dt - *request.checkpoint_every_s) > 1e-9 * *request.checkpoint_every_s ||
+        checkpoint_steps % plan.decimation != 0)
+      throw InputError({"scene", std::nullopt, "--checkpoint-every", fmt::format("a multiple of the row interval {:.10g} s", row_interval)},
+                       fmt::format("--checkpoint-every {:.10g} is not a whole number of rows of {:.10g} s (dt_s {:.10g} s × "
+                                   "output.decimation {})",
+                                   *request.checkpoint_every_s, row_interval, dt, plan.decimation));
   }
   std::optional<LoadedCheckpoint> checkpoint;
   if (request.restart_path) {
@@ -143,7 +148,6 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
   outputs.begin(scene.written, scene.metadata);
   // t0 + k·dt, not a running sum: every row time is exact to one rounding (and t0 = 0 adds none).
   auto time_of = [&](long step) { return plan.t0_s + static_cast<double>(step) * dt; };
-  bool first_row_due = true;
   std::vector<std::string> notes = outputs.notes();
   if (checkpoint) {
     const double row_interval = static_cast<double>(plan.decimation) * dt;
@@ -153,7 +157,6 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
       for (std::size_t c = 0; c < values.size(); ++c) values[c] = earlier.table.columns[c + 1][r];
       outputs.append(earlier.table.columns[0][r], values);
     }
-    if (earlier.table.rows() > 0) first_row_due = k0 % plan.decimation == 0;  // continue the original's rows
     // Continuing a dead run's temporary continues all of that run's files (.h5 and .out).
     const auto& kept = outputs.set_aside();
     if (std::find(kept.begin(), kept.end(), earlier.source) != kept.end())
@@ -184,7 +187,7 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
   long k = k0;
   double t = time_of(k);
   try {
-    if (first_row_due) write_row(t);
+    write_row(t);
     while (k < steps && interrupt_signal() == 0) {  // a signal stops the run at the end of a step
       scene.step(t, dt);
       ++k;
@@ -197,7 +200,12 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
       if (progress) progress(t, plan.t_max_s);
     }
   } catch (const std::exception& e) {  // numerical trouble, or a failing external controller
-    outputs.finish({elapsed(), std::string("failed: ") + e.what(), t, report.warnings});
+    // The failure is what the user needs: a file that cannot be closed on top of it keeps its
+    // rows and says "running" or "incomplete" (the writers' own guarantees).
+    try {
+      outputs.finish({elapsed(), std::string("failed: ") + e.what(), t, report.warnings});
+    } catch (...) {
+    }
     throw;
   }
   report.wall_s = elapsed();

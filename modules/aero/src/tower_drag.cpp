@@ -30,7 +30,7 @@ TowerDragLoad tower_drag(const Params& params, const Vec3& tower_axis, std::span
     per_length(i, f1, m1);
     const double length = params.tower[i].elevation_m - params.tower[i - 1].elevation_m;
     // Both f and r × f vary along the element; with f linear, r × f is quadratic in the elevation,
-    // and its exact integral adds (Δr × Δf)/6 to the trapezoid's.
+    // and its exact integral is the trapezoid's less L (Δr × Δf)/6.
     const Vec3 dr = position_m[i] - position_m[i - 1];
     load.force_N += 0.5 * length * (f0 + f1);
     load.moment_N_m += 0.5 * length * (m0 + m1) - length / 6.0 * dr.cross(f1 - f0);

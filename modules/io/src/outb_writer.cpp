@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cerrno>
 #include <cmath>
@@ -17,6 +18,7 @@
 
 #include "fowtsim/core/error.hpp"
 #include "status_field.hpp"
+#include "whole_writes.hpp"
 
 namespace fowtsim::io {
 namespace {
@@ -100,18 +102,10 @@ struct OutbWriter::Impl {
   }
 
   void write_all(const void* data, std::size_t size, off_t offset, const char* what) {
-    const char* bytes = static_cast<const char*>(data);
-    std::size_t done = 0;
-    while (done < size) {
-      const ssize_t n = ::pwrite(fd, bytes + done, size - done, offset + static_cast<off_t>(done));
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) {
-        const int error = n < 0 ? errno : ENOSPC;
-        // Never leave part of a row: the file ends at the last whole one.
-        if (offset >= durable_bytes) (void)!::ftruncate(fd, durable_bytes);
-        fail(fmt::format("cannot write {}: {}", what, std::strerror(error)), "check free disk space");
-      }
-      done += static_cast<std::size_t>(n);
+    if (const int error = detail::write_all_at(fd, static_cast<const char*>(data), size, offset)) {
+      // Never leave part of a row: the file ends at the last whole one.
+      if (offset >= durable_bytes) (void)!::ftruncate(fd, durable_bytes);
+      fail(fmt::format("cannot write {}: {}", what, std::strerror(error)), "check free disk space");
     }
   }
 
@@ -135,10 +129,13 @@ struct OutbWriter::Impl {
   // (n − 1), rebuilds every row's time to within rounding.
   void write_row_count() {
     if (rows_written > static_cast<std::size_t>(INT32_MAX)) fail("more than 2^31 − 1 rows: beyond the .outb format's row count");
-    std::string fields;
-    put<std::int32_t>(fields, static_cast<std::int32_t>(rows_written));
-    put<double>(fields, first_time_s);
-    put<double>(fields, rows_written > 1 ? (written_last_time_s - first_time_s) / static_cast<double>(rows_written - 1) : 0.0);
+    // NT (int32) then TimeOut1, TimeIncr (float64), packed as in the header; no allocation per flush.
+    const auto rows = static_cast<std::int32_t>(rows_written);
+    const double interval = rows_written > 1 ? (written_last_time_s - first_time_s) / static_cast<double>(rows_written - 1) : 0.0;
+    std::array<char, sizeof rows + 2 * sizeof(double)> fields{};
+    std::memcpy(fields.data(), &rows, sizeof rows);
+    std::memcpy(fields.data() + sizeof rows, &first_time_s, sizeof(double));
+    std::memcpy(fields.data() + sizeof rows + sizeof(double), &interval, sizeof(double));
     write_all(fields.data(), fields.size(), kRowCountOffset, "the header's row count");
   }
 
@@ -235,6 +232,7 @@ void OutbWriter::finish(const RunEnd& end) {
   Impl& w = *impl_;
   if (w.phase != Impl::Phase::open) w.fail("finish() before begin() or called twice");
   w.write_pending();
+  w.write_row_count();  // again: an earlier rewrite of it may have failed after its rows went in
   w.write_status(end.status);
   w.phase = Impl::Phase::finished;
   const int f = w.fd;

@@ -13,6 +13,7 @@
 
 #include "fowtsim/core/error.hpp"
 #include "status_field.hpp"
+#include "whole_writes.hpp"
 
 namespace fowtsim::io {
 
@@ -44,16 +45,9 @@ struct TextOutWriter::Impl {
   // Writes `pending` after the last whole row. A failed write is cut back to that row (so the file
   // never ends in a partial one) and the rows stay pending for the next try.
   void write_pending() {
-    std::size_t done = 0;
-    while (done < pending.size()) {
-      const ssize_t n = ::pwrite(fd, pending.data() + done, pending.size() - done, durable_bytes + static_cast<off_t>(done));
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) {
-        const int error = n < 0 ? errno : ENOSPC;
-        (void)!::ftruncate(fd, durable_bytes);
-        fail(fmt::format("cannot write {} rows: {}", pending_rows, std::strerror(error)), "check free disk space");
-      }
-      done += static_cast<std::size_t>(n);
+    if (const int error = detail::write_all_at(fd, pending.data(), pending.size(), durable_bytes)) {
+      (void)!::ftruncate(fd, durable_bytes);
+      fail(fmt::format("cannot write {} rows: {}", pending_rows, std::strerror(error)), "check free disk space");
     }
     durable_bytes += static_cast<off_t>(pending.size());
     pending.clear();
@@ -63,8 +57,8 @@ struct TextOutWriter::Impl {
 
   void write_status(const std::string& status) {
     const std::string field = status_field(status);
-    if (::pwrite(fd, field.data(), field.size(), status_offset) != static_cast<ssize_t>(field.size()))
-      fail(fmt::format("cannot write the status: {}", std::strerror(errno)), "check free disk space");
+    if (const int error = detail::write_all_at(fd, field.data(), field.size(), status_offset))
+      fail(fmt::format("cannot write the status: {}", std::strerror(error)), "check free disk space");
   }
 
   void close_file() {

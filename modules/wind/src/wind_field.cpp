@@ -77,7 +77,10 @@ void WindField::velocities(std::span<const Vec3> points, double time_s, std::spa
 }
 
 void WindField::velocities_profile_below(std::span<const Vec3> points, double time_s, std::span<Vec3> out) const {
-  for (std::size_t i = 0; i < points.size() && i < out.size(); ++i) out[i] = velocity_at(points[i], time_s, false);
+  if (points.size() != out.size())
+    throw InputError(ErrorContext{"wind", time_s, "out", ""},
+                     "points.size() (" + std::to_string(points.size()) + ") != out.size() (" + std::to_string(out.size()) + ")");
+  for (std::size_t i = 0; i < points.size(); ++i) out[i] = velocity_at(points[i], time_s, false);
 }
 
 Wind::State Wind::make_state(const Params&) { return State{}; }

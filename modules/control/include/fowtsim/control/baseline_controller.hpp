@@ -9,7 +9,7 @@
 //   outputs(p, u, s)         the held demands; before the first advance, those the first call would
 //                            set (torque from the schedule at the measured speed, pitch as measured).
 // Channels (OpenFAST ServoDyn/ElastoDyn names and units): GenTq [kN·m], GenPwr [kW],
-// BldPitch1–3 [deg], GenSpeed [rpm].
+// BlPitchC1–3 [deg] (the pitch command; the blades' own pitch BldPitch· is the structure's), GenSpeed [rpm].
 #include <array>
 #include <optional>
 #include <span>
@@ -37,7 +37,7 @@ struct ControllerOutput {
   double generator_speed_rad_s = 0.0;                 // measured generator speed [rad/s] (copied, for the GenSpeed channel)
 };
 
-// GenTq, GenPwr, BldPitch1–3, GenSpeed (module name `module`).
+// GenTq, GenPwr, BlPitchC1–3, GenSpeed (module name `module`).
 std::vector<ChannelInfo> controller_channels(const char* module);
 
 // Values of controller_channels() in that order and in the channel units; values.size() must be 6

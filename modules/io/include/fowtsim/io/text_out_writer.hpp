@@ -18,7 +18,7 @@
 // a run that died without closing it (SIGKILL, power loss). The header holds no date or time, so
 // identical runs give byte-identical files.
 //
-// Rows are formatted into a buffer and written with write(2) every `rows_per_flush` rows (or ~2 s,
+// Rows are formatted into a buffer and written with pwrite(2) every `rows_per_flush` rows (or ~2 s,
 // FlushPolicy); the file only ever grows by whole rows: a write that fails (a full disk) is cut
 // back to the last whole row and the rows stay buffered, so a later flush or finish (once space is
 // free) writes them.
