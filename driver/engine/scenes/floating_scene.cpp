@@ -205,6 +205,52 @@ ShaftMotion FloatingScene::shaft_at(double t, const multibody::State& body) {
   return shaft_motion(evaluation_.kinematics, evaluation_.acceleration);
 }
 
+Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& s) {
+  if (blades_)
+    throw InputError({"modes", std::nullopt, "blades", "rigid blades (drop the `blades` section)"},
+                     "the flexible blades' states are not linearised yet: modes of the rigid-blade structure only");
+  const int n = model_.dof_count;
+  FloatingState work = s;  // the loads' warm starts and memories change on a copy only
+  auto accelerations = [&](const multibody::State& body) {
+    work.sea = s.sea;
+    if (work.aero) *work.aero = *s.aero;
+    stage_loads_->act_on(work.held, work.sea, work.aero ? &*work.aero : nullptr, nullptr);
+    multibody::AppliedLoads loads;
+    stage_loads_->loads(t, body, loads);
+    multibody::evaluate(model_, body, loads, t, evaluation_);
+    return Eigen::VectorXd(evaluation_.acceleration.head(n));
+  };
+  // Coordinate k displaced by h: translations in g, rotations about b's axes (so that δq̇ = u),
+  // the rotor and generator angles.
+  auto displaced = [&](int k, double h) {
+    multibody::State b = s.body;
+    if (k < 3) b.position_m[k] += h;
+    else if (k < 6) b.orientation = (b.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(h, Vec3::Unit(k - 3)))).normalized();
+    else if (k == multibody::kRotor) b.rotor_azimuth_rad += h;
+    else b.generator_azimuth_rad += h;
+    return b;
+  };
+  auto sped_up = [&](int k, double h) {
+    multibody::State b = s.body;
+    if (k < 3) b.velocity_m_s[k] += h;
+    else if (k < 6) b.angular_velocity_rad_s[k - 3] += h;
+    else if (k == multibody::kRotor) b.rotor_speed_rad_s += h;
+    else b.generator_speed_rad_s += h;
+    if (model_.dof_count == multibody::kRotor + 1) b.generator_speed_rad_s = b.rotor_speed_rad_s;  // rigid shaft
+    return b;
+  };
+  // Steps of 1e-4 m (rad) and 1e-4 m/s (rad/s): central differences are then accurate to ~1e-8 of
+  // the stiffness (curvatures over metres) and far above the solvers' tolerances (mooring 1e-10).
+  constexpr double h = 1e-4;
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  a.topRightCorner(n, n).setIdentity();
+  for (int k = 0; k < n; ++k) {
+    a.block(n, k, n, 1) = (accelerations(displaced(k, h)) - accelerations(displaced(k, -h))) / (2.0 * h);
+    a.block(n, n + k, n, 1) = (accelerations(sped_up(k, h)) - accelerations(sped_up(k, -h))) / (2.0 * h);
+  }
+  return a;
+}
+
 RotorDemands FloatingScene::demands(const FloatingState& s) const {
   RotorDemands d;
   d.generator_torque_N_m = s.held.generator_torque_N_m;

@@ -1,0 +1,36 @@
+#pragma once
+// `fowtsim modes DECK`: natural frequencies, damping ratios and mode shapes of a floating-turbine
+// deck's structure, linearised about its initial state (FloatingScene::linearised_system) — the
+// eigenvalues λ = −ζω ± iω√(1−ζ²) of ẋ = A x. Parked or not, the rotor is taken as it is at t = 0
+// (no multi-blade transformation), the controller's demands held.
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+namespace fowtsim::driver {
+
+struct StructuralMode {
+  double frequency_hz = 0.0;     // undamped natural frequency |λ|/2π (0: a rigid-body mode)
+  double damping_ratio = 0.0;    // −Re λ / |λ|
+  std::string dominant;          // the coordinate with the largest share of the shape
+  Eigen::VectorXd shape;         // displacement part of the eigenvector, largest entry 1 (real part after phase alignment)
+};
+
+struct ModesResult {
+  std::vector<std::string> coordinates;  // names of the shape entries (PtfmSurge …, in m or rad)
+  std::vector<StructuralMode> modes;     // one per complex-conjugate pair or real eigenvalue, by frequency
+};
+
+// The modes of the deck (with `--set` settings applied): InputError for a deck without a floating
+// scene or with flexible blades.
+ModesResult floating_modes(const std::filesystem::path& deck, const std::vector<std::string>& settings = {});
+
+// Prints the table; with `csv`, writes frequencies, damping and shapes there too. Returns the exit code.
+int run_modes_command(const std::filesystem::path& deck, const std::vector<std::string>& settings,
+                      const std::optional<std::filesystem::path>& csv, std::FILE* out);
+
+}  // namespace fowtsim::driver
