@@ -77,8 +77,8 @@ TEST_CASE("first rotating in-plane frequency of the uniform cantilever: Southwel
   const double k_omega = one.centrifugal_stiffness()(0, 0) / one.mass()(0, 0) - 1.0;
   INFO("K_Omega " << k_omega << "; omega_0^2 " << w0sq);
   // The flapwise Southwell coefficient of the uniform cantilever with no hub radius, from its
-  // first non-rotating mode, is 1.1933 (e.g. Bielawa, Rotary Wing Structural Dynamics, Table 9.1;
-  // Wright et al. 1982); in plane it is 1 less. Tolerance: the literature's 4 digits.
+  // first non-rotating mode, is the classical 1.1933 of rotor dynamics texts (quoted from memory,
+  // not from a stored source); in plane it is 1 less. Tolerance: those 4 digits.
   CHECK(k_omega == Approx(0.1933).margin(1e-4));
   CHECK(one.rotating_frequencies_squared(0.0)(0) == Approx(w0sq).epsilon(1e-12));  // K_jj = ω_j² M_jj
   CHECK(one.rotating_frequencies_squared(spin_rate)(0) ==
