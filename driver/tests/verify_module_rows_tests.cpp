@@ -37,8 +37,9 @@ void check_case(const std::string& name, std::size_t rows_without_reference, std
 TEST_CASE("fowtsim verify aero: Cp peak, AeroDyn operating points, momentum balance, tower potential flow",
           "[verification][aero]") {
   // Cp peak and its λ; momentum thrust and torque; tower potential flow. With ../shared: five
-  // rotor loads, α, induction and convergence against AeroDyn's seven operating points.
-  check_case("aero", 5, 8);
+  // rotor loads, α, induction, RtSpeed, RtVAvgxh, RtTSR, RtAeroCq, RtSkew, the node loads and
+  // convergence against AeroDyn's seven operating points.
+  check_case("aero", 5, 14);
 }
 
 TEST_CASE("fowtsim verify wind: IEC σ, generated σ, sampler coherence, TurbSim files", "[verification][wind]") {

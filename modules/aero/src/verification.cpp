@@ -66,6 +66,9 @@ RotorMean rotor_mean(const Params& params, const RigidRotor& rotor, double wind_
   RotorMean m;
   m.alpha_deg.assign(params.output_nodes.size(), 0.0);
   m.axial_induction.assign(params.output_nodes.size(), 0.0);
+  for (const ChannelInfo& c : Aero::channels(params)) m.channel_names.push_back(c.name);
+  m.channel_means.assign(m.channel_names.size(), 0.0);
+  std::vector<double> values(m.channel_names.size());
   const double n = static_cast<double>(azimuth_deg.size());
   for (double azimuth : azimuth_deg) {
     place_rigid_rotor(params, rotor, azimuth * kDegree, rotor_speed_rpm * std::numbers::pi / 30.0, pitch_deg * kDegree, in);
@@ -81,8 +84,19 @@ RotorMean rotor_mean(const Params& params, const RigidRotor& rotor, double wind_
       m.alpha_deg[j] += node.section.alpha_rad / kDegree / n;
       m.axial_induction[j] += node.section.axial_induction / n;
     }
+    channel_values(params, in, out, values);
+    for (std::size_t k = 0; k < values.size(); ++k) m.channel_means[k] += values[k] / n;
   }
   return m;
+}
+
+double RotorMean::channel(const std::string& name) const {
+  const auto it = std::find(channel_names.begin(), channel_names.end(), name);
+  if (it == channel_names.end()) {
+    throw InputError({"aero.verification", std::nullopt, "channel", "name a channel of Aero::channels"},
+                     "the aero module writes no channel " + name);
+  }
+  return channel_means[static_cast<std::size_t>(it - channel_names.begin())];
 }
 
 MomentumBalance momentum_balance(Params params) {

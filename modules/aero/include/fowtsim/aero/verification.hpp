@@ -4,6 +4,7 @@
 // peak, azimuth averages of the rotor at an operating point, the momentum balance of converged
 // sections, and the tower's potential flow against the cylinder's complex potential. The
 // reference values and their sources stay with the callers.
+#include <string>
 #include <vector>
 
 #include "fowtsim/aero/params.hpp"
@@ -34,6 +35,12 @@ struct RotorMean {
   std::vector<double> alpha_deg;        // (output nodes) blade 1 angle of attack [deg]
   std::vector<double> axial_induction;  // (output nodes) blade 1 axial induction [-]
   int unconverged_evaluations = 0;      // evaluations with a node left without a root (0 expected)
+  // Every channel the module writes (Aero::channels, channel_values: names, units and signs as
+  // written to the outputs), averaged over the azimuths like the rest.
+  std::vector<std::string> channel_names;
+  std::vector<double> channel_means;
+  // Mean of the named channel; throws InputError for a name the module does not write.
+  double channel(const std::string& name) const;
 };
 // Mean of the rigid rotor's loads and blade-1 output-node states over the azimuths `azimuth_deg`
 // (OpenFAST's output rows), uniform wind, rotor speed and pitch as given. Throws InputError for
