@@ -10,24 +10,11 @@
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
 #include "run_request.hpp"
+#include "test_helpers.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
 
-namespace {
-double mean_after(const io::ChannelTable& t, const char* name, double t0) {
-  const auto& time = t.time();
-  const auto& v = t.columns[*t.find(name)];
-  double sum = 0.0;
-  int n = 0;
-  for (std::size_t i = 0; i < v.size(); ++i)
-    if (time[i] >= t0) {
-      sum += v[i];
-      ++n;
-    }
-  return sum / n;
-}
-}  // namespace
 
 TEST_CASE("OC3-Hywind in steady wind settles at rated speed with the published pitch", "[verification][coupled]") {
   const auto dir = testing::scratch_dir("coupled_steady");

@@ -9,6 +9,7 @@
 #include "h5_attributes.hpp"
 #include "run/run_scene.hpp"
 #include "run_request.hpp"
+#include "test_helpers.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -16,16 +17,6 @@ using namespace fowtsim::driver;
 namespace {
 
 std::filesystem::path toy_deck() { return testing::source_dir() / "inputs/toy_coupled_oscillators.yaml"; }
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  FAIL("expected an exception");
-  return "";
-}
 
 }  // namespace
 

@@ -27,6 +27,7 @@
 #include "run/run_scene.hpp"
 #include "h5_attributes.hpp"
 #include "run_request.hpp"
+#include "test_helpers.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -49,16 +50,6 @@ std::filesystem::path platform_deck() { return testing::source_dir() / "inputs/o
 std::string text_of(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  FAIL("expected an exception");
-  return "";
 }
 
 // The fowtsim executable built next to this test executable (for exit codes and signals).

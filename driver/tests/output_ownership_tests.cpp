@@ -17,6 +17,7 @@
 #include "run/output_set.hpp"
 #include "run/run_scene.hpp"
 #include "run_request.hpp"
+#include "test_helpers.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -24,16 +25,6 @@ using namespace fowtsim::driver;
 namespace {
 
 const std::vector<ChannelInfo> kOneChannel = {ChannelInfo{"X", "m", "x", "test"}};
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  FAIL("expected an exception");
-  return "";
-}
 
 std::string bytes_of(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);

@@ -19,24 +19,12 @@
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
 #include "run_request.hpp"
+#include "test_helpers.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
 
 namespace {
-
-double mean_after(const io::ChannelTable& t, const char* name, double t0) {
-  const auto& time = t.time();
-  const auto& v = t.columns[*t.find(name)];
-  double sum = 0.0;
-  int n = 0;
-  for (std::size_t i = 0; i < v.size(); ++i)
-    if (time[i] >= t0) {
-      sum += v[i];
-      ++n;
-    }
-  return sum / n;
-}
 
 // Relative tolerances, 10× the worst measured (11 m/s: RotSpeed and GenSpeed +3.89e-4, GenTq
 // +7.77e-4, GenPwr +1.18e-3; 9 m/s +3.49e-4/+6.97e-4/+1.04e-3; 5 m/s −5.4e-6 in speed). The offsets

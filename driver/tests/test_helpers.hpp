@@ -1,0 +1,41 @@
+#pragma once
+// Small helpers the driver tests share: the message of the exception a call must throw, and the
+// mean of a channel after a start-up transient.
+#include <functional>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "fowtsim/io/channel_table.hpp"
+
+namespace fowtsim::driver {
+
+// The what() of the exception `f` throws; a test failure if it throws none.
+inline std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  FAIL("expected an exception");
+  return "";
+}
+
+// Mean of channel `name` over the rows at t ≥ t0 [s].
+inline double mean_after(const io::ChannelTable& t, const char* name, double t0) {
+  const auto c = t.find(name);
+  REQUIRE(c);
+  const auto& time = t.time();
+  const auto& v = t.columns[*c];
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (time[i] >= t0) {
+      sum += v[i];
+      ++n;
+    }
+  REQUIRE(n > 0);
+  return sum / n;
+}
+
+}  // namespace fowtsim::driver
