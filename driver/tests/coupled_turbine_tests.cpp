@@ -15,7 +15,6 @@
 using namespace fowtsim;
 using namespace fowtsim::driver;
 
-
 TEST_CASE("OC3-Hywind in steady wind settles at rated speed with the published pitch", "[verification][coupled]") {
   const auto dir = testing::scratch_dir("coupled_steady");
   // Published operating table (PUBLISHED.md, welib NREL5MW_Oper.csv from OpenFAST): pitch 3.45°,
