@@ -20,7 +20,7 @@
 #include "run/option_checks.hpp"
 #include "run/run_scene.hpp"
 #include "run/turbulence_command.hpp"
-#include "scenes/floating_modes.hpp"
+#include "cli/modes_command.hpp"
 #include "cli/post_command.hpp"
 #include "cli/post_config.hpp"
 #include "cli/sweep_command.hpp"
@@ -201,13 +201,13 @@ int main(int argc, char** argv) {
   bench->add_option("--shared", shared_dir, "directory holding reference/ (default " + shared_dir + ")");
 
   std::string wind_deck, wind_out;
-  std::string modes_deck, modes_csv;
+  std::string modes_deck, modes_output;
   std::vector<std::string> modes_settings;
   auto* modes = app.add_subcommand("modes", "natural frequencies, damping and mode shapes of a floating-turbine deck, "
                                             "linearised about its initial state");
   modes->add_option("deck", modes_deck, "floating-turbine deck (rigid blades)")->required()->check(CLI::ExistingFile);
   modes->add_option("--set", modes_settings, "set a deck key, as for run")->allow_extra_args(false);
-  modes->add_option("-o,--output", modes_csv, "also write the table and the shapes to this CSV file");
+  modes->add_option("-o,--output", modes_output, "also write the frequencies, damping and shapes to OUT.h5 or OUT.csv");
   auto* turbulence = app.add_subcommand("turbulence", "generate a turbulent wind field (IEC Kaimal) to .bts and .h5");
   turbulence->add_option("deck", wind_deck, "deck with a `wind:` section of model turbulent")->required()->check(CLI::ExistingFile);
   turbulence->add_option("-o,--output", wind_out,
@@ -327,7 +327,7 @@ int main(int argc, char** argv) {
     }
     if (*modes)
       return run_modes_command(modes_deck, modes_settings,
-                               modes_csv.empty() ? std::nullopt : std::optional<std::filesystem::path>(modes_csv), stdout);
+                               modes_output.empty() ? std::nullopt : std::optional<std::filesystem::path>(modes_output), stdout);
     if (*turbulence) return run_turbulence_command(wind_deck, wind_out.empty() ? std::nullopt : std::optional<std::filesystem::path>(wind_out), stdout);
     if (*verify) return verify_command(cases, shared_dir);
     set_shared_dir(shared_dir);

@@ -2,11 +2,15 @@
 // potential flow against the platform frequencies of FAST's linearised full system (PUBLISHED.md:
 // surge 0.0080479, sway 0.0080475, heave 0.0324294, roll 0.0342412, pitch 0.0342602, yaw 0.1210301 Hz).
 #include <algorithm>
+#include <cstdio>
+
+#include <hdf5.h>
 
 #include <catch2/catch.hpp>
 
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/testing/skip.hpp"
+#include "cli/modes_command.hpp"
 #include "scenes/floating_modes.hpp"
 
 using namespace fowtsim;
@@ -45,4 +49,27 @@ TEST_CASE("modes of OC3-Hywind at rest match FAST's linearised platform frequenc
 TEST_CASE("modes refuse the flexible blades, whose states are not linearised", "[unit][modes]") {
   CHECK_THROWS_AS(floating_modes(testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml"),
                   InputError);
+}
+
+TEST_CASE("modes -o writes the table as HDF5 (frequencies, shapes) and refuses other extensions", "[verification][modes]") {
+  (void)testing::shared_dir_or_skip();  // the WAMIT files live beside the reference data
+  const auto dir = testing::scratch_dir("modes_hdf5");
+  const auto deck = testing::source_dir() / "inputs/oc3_hywind/free_decay_pitch_wamit.yaml";
+  const std::vector<std::string> at_rest = {"structure.initial_conditions.platform_angles_deg=[0, 0, 0]"};
+  std::FILE* sink = std::tmpfile();
+  REQUIRE(run_modes_command(deck, at_rest, dir / "modes.h5", sink) == 0);
+  const ModesResult r = floating_modes(deck, at_rest);
+  const hid_t file = H5Fopen((dir / "modes.h5").string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  REQUIRE(file >= 0);
+  const hid_t set = H5Dopen2(file, "frequency_hz", H5P_DEFAULT);
+  std::vector<double> frequency(r.modes.size());
+  const hid_t space = H5Dget_space(set);
+  CHECK(H5Sget_simple_extent_npoints(space) == static_cast<hssize_t>(r.modes.size()));
+  REQUIRE(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, frequency.data()) >= 0);
+  for (std::size_t k = 0; k < r.modes.size(); ++k) CHECK(frequency[k] == r.modes[k].frequency_hz);  // written bit for bit
+  H5Sclose(space);
+  H5Dclose(set);
+  H5Fclose(file);
+  CHECK_THROWS_AS(run_modes_command(deck, at_rest, dir / "modes.txt", sink), InputError);
+  std::fclose(sink);
 }

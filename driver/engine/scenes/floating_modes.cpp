@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <fstream>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -58,38 +57,6 @@ ModesResult floating_modes(const std::filesystem::path& deck_path, const std::ve
   std::sort(result.modes.begin(), result.modes.end(),
             [](const StructuralMode& x, const StructuralMode& y) { return x.frequency_hz < y.frequency_hz; });
   return result;
-}
-
-int run_modes_command(const std::filesystem::path& deck, const std::vector<std::string>& settings,
-                      const std::optional<std::filesystem::path>& csv, std::FILE* out) {
-  const ModesResult r = floating_modes(deck, settings);
-  fmt::print(out, "{} — linearised about its initial state (controller demands and radiation memory held)\n",
-             deck.string());
-  fmt::print(out, "{:>4} {:>12} {:>10} {:>10}  {:<11} shape ({}; m and rad, largest 1)\n", "mode", "freq Hz", "period s",
-             "damping", "dominant", fmt::join(r.coordinates, " "));
-  std::ofstream file;
-  if (csv) {
-    file.open(*csv);
-    if (!file) throw InputError({"modes", std::nullopt, "-o", "a writable file"}, "cannot create " + csv->string());
-    file << "mode,frequency_hz,period_s,damping_ratio,dominant";
-    for (const std::string& c : r.coordinates) file << ',' << c;
-    file << '\n';
-  }
-  for (std::size_t k = 0; k < r.modes.size(); ++k) {
-    const StructuralMode& m = r.modes[k];
-    const double period = m.frequency_hz > 0.0 ? 1.0 / m.frequency_hz : INFINITY;
-    std::string shape;
-    for (Eigen::Index i = 0; i < m.shape.size(); ++i) shape += fmt::format(" {:+.3f}", m.shape[i]);
-    fmt::print(out, "{:>4} {:>12.6g} {:>10.4g} {:>10.4f}  {:<11}{}\n", k + 1, m.frequency_hz, period, m.damping_ratio, m.dominant,
-               shape);
-    if (csv) {
-      file << fmt::format("{},{:.9g},{:.9g},{:.6g},{}", k + 1, m.frequency_hz, period, m.damping_ratio, m.dominant);
-      for (Eigen::Index i = 0; i < m.shape.size(); ++i) file << fmt::format(",{:.6g}", m.shape[i]);
-      file << '\n';
-    }
-  }
-  if (csv) fmt::print(out, "written {}\n", csv->string());
-  return 0;
 }
 
 }  // namespace fowtsim::driver

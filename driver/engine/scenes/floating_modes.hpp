@@ -1,11 +1,9 @@
 #pragma once
-// `fowtsim modes DECK`: natural frequencies, damping ratios and mode shapes of a floating-turbine
+// The modes behind `fowtsim modes DECK` (driver/app/cli/modes_command.hpp): natural frequencies, damping ratios and mode shapes of a floating-turbine
 // deck's structure, linearised about its initial state (FloatingScene::linearised_system) — the
 // eigenvalues λ = −ζω ± iω√(1−ζ²) of ẋ = A x. Parked or not, the rotor is taken as it is at t = 0
 // (no multi-blade transformation), the controller's demands held.
-#include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,8 +27,5 @@ struct ModesResult {
 // scene or with flexible blades.
 ModesResult floating_modes(const std::filesystem::path& deck, const std::vector<std::string>& settings = {});
 
-// Prints the table; with `csv`, writes frequencies, damping and shapes there too. Returns the exit code.
-int run_modes_command(const std::filesystem::path& deck, const std::vector<std::string>& settings,
-                      const std::optional<std::filesystem::path>& csv, std::FILE* out);
 
 }  // namespace fowtsim::driver
