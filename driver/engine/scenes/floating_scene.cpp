@@ -318,7 +318,7 @@ void FloatingScene::row(double t, const FloatingState& s, std::span<double> out)
   const std::span<double> v(values_);
   if (body_block_.written || sea_block_.written) {  // the hydro channels take the platform's acceleration
     const multibody::Output mo = multibody::Multibody::outputs(model_, loads, s.body, t);
-    std::copy(mo.channels.begin(), mo.channels.end(), v.begin());
+    std::copy(mo.channels.begin(), mo.channels.begin() + body_block_.count, v.begin());
     Vec6 acceleration;
     acceleration << mo.platform_acceleration_m_s2, mo.platform_angular_acceleration_rad_s2;
     if (sea_block_.written) sea_->channel_values(t, row_sea_, acceleration, v.subspan(sea_block_.first, sea_block_.count));
