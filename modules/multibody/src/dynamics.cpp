@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <type_traits>
 
 #include <Eigen/Cholesky>
 
@@ -178,13 +179,25 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
     m(i, i) = 1.0;
     f[i] = a;
   }
-  const Eigen::LLT<GeneralisedMatrix> llt(m);
-  if (llt.info() != Eigen::Success) {
-    throw NumericalError({"multibody", t, "mass matrix M(q)",
-                          "check the added mass handed in (it must be symmetric positive semi-definite)"},
-                         "the generalised mass matrix is not positive definite");
+  // The rigid-tower model solves its 8 × 8 block with the same fixed-size Cholesky as before the
+  // tower DOFs existed (bit-identical results); the flexible one the whole matrix.
+  auto solve = [&](const auto& block, const auto& rhs) {
+    const Eigen::LLT<std::remove_cvref_t<decltype(block)>> llt(block);
+    if (llt.info() != Eigen::Success) {
+      throw NumericalError({"multibody", t, "mass matrix M(q)",
+                            "check the added mass handed in (it must be symmetric positive semi-definite)"},
+                           "the generalised mass matrix is not positive definite");
+    }
+    return llt.solve(rhs).eval();
+  };
+  if (model.flexible_tower.mode_count == 0) {
+    const Eigen::Matrix<double, kTower, kTower> rigid = m.topLeftCorner<kTower, kTower>();
+    const Eigen::Matrix<double, kTower, 1> rigid_f = f.head<kTower>();
+    out.acceleration.setZero();
+    out.acceleration.head<kTower>() = solve(rigid, rigid_f);
+  } else {
+    out.acceleration = solve(m, f);
   }
-  out.acceleration = llt.solve(f);
   for (int i = 0; i < kMaxDofs; ++i) {
     if (!std::isfinite(out.acceleration[i])) {
       throw NumericalError({"multibody", t, "generalised acceleration u̇[" + std::to_string(i) + "]",
