@@ -56,14 +56,14 @@ struct Linear {
   Eigen::MatrixXd stiffness_part, damping_part;  // A, B
   Eigen::VectorXd offset;                        // a0
 };
-Linear linearise(const Model& m, const AppliedLoads& loads) {
+Linear linearise(const Model& m, const AppliedLoads& loads, const State& about) {
   const int n = m.flexible_tower.mode_count;
   auto acc = [&](const State& s) {
     Evaluation e;
     evaluate(m, s, loads, 0.0, e);
     return Eigen::VectorXd(e.acceleration.segment(kTower, n));
   };
-  const State s0 = initial_state(m);
+  const State& s0 = about;
   Linear l;
   l.offset = acc(s0);
   l.stiffness_part.resize(n, n);
@@ -107,7 +107,7 @@ TEST_CASE("static tower-top deflection under a top force equals F L^3 / 3EI with
   AppliedLoads loads;
   loads.gravity = false;
   loads.rotor_force_N = Vec3(2e5, -1e5, 0.0);  // at the apex = the tower top
-  const Linear l = linearise(m, loads);
+  const Linear l = linearise(m, loads, initial_state(m));
   const Eigen::VectorXd q = -l.stiffness_part.fullPivLu().solve(l.offset);
   const double exact = std::pow(80.0, 3) / (3.0 * 4e11);
   WARN("static FA " << q[0] << " vs " << 2e5 * exact << ", SS " << q[1] << " vs " << -1e5 * exact);
@@ -144,7 +144,7 @@ TEST_CASE("held-platform tower frequencies equal flexbody's isolated tower with 
   for (const bool gravity : {false, true}) {
     AppliedLoads loads;
     loads.gravity = gravity;
-    const Linear l = linearise(m, loads);
+    const Linear l = linearise(m, loads, initial_state(m));
     const Eigen::VectorXd f = frequencies_hz(l.stiffness_part);
 
     // Reference: flexbody on the same table, per plane.
@@ -229,4 +229,48 @@ TEST_CASE("free flexible-tower OC3 conserves energy without damping or gravity",
   CHECK(coarse < 1e-5);            // RK4 truncation at ω h ≈ 0.1 on the fastest mode, measured ~1e-6
   CHECK(coarse / fine > 16.0);     // converges at (at least) 4th order
   CHECK(angular_coarse < 1e-8);    // measured ~1e-9: the momentum balance rows are exact
+}
+
+TEST_CASE("tower-base loads of the deflected OC3 tower in static equilibrium equal the weights and their arms",
+          "[verification][multibody][flexible_tower]") {
+  // Platform held, gravity: the nacelle's and rotor's overhang bend the tower; Newton on the tower
+  // rows finds the static q. There u̇ = 0, so the tower-base load is the weight of everything above
+  // and its moment about the deflected geometry's base: Σ m g and Σ (p − base) × m g (positions
+  // from the chain, a calculation independent of outputs()' d'Alembert sums).
+  Params p = oc3_hywind_params();
+  set_oc3_flexible_tower(p);
+  p.dofs.platform_free = {false, false, false, false, false, false};
+  p.dofs.rotor = RotorSpin::held;
+  const Model m = make_model(p);
+  AppliedLoads loads;
+  State s = initial_state(m);
+  for (int iteration = 0; iteration < 4; ++iteration) {
+    const Linear l = linearise(m, loads, s);
+    const Eigen::VectorXd dq = -l.stiffness_part.fullPivLu().solve(l.offset);
+    for (int j = 0; j < 4; ++j) s.tower_deflection_m[j] += dq[j];
+  }
+  Evaluation e;
+  evaluate(m, s, loads, 0.0, e);
+  CHECK(e.acceleration.norm() < 1e-10);  // equilibrium (Newton converged quadratically to round-off)
+  const Output out = Multibody::outputs(m, loads, s);
+  const ChainKinematics& k = e.kinematics;
+  const Vec3 g(0.0, 0.0, -p.gravity_m_s2);
+  Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+  auto add = [&](double mass, const Vec3& at) {
+    force += mass * g;
+    moment += (at - k.tower_base.position_m).cross(mass * g);
+  };
+  for (const TowerStation& st : m.flexible_tower.stations) add(st.mass_kg, tower_station(m, s, k, st).position_m);
+  add(m.nacelle.mass_kg, k.nacelle_cm.position_m);
+  add(m.rotor.mass_kg, k.rotor_cm.position_m);
+  WARN("static TTDspFA " << s.tower_deflection_m[0] + s.tower_deflection_m[1] << " m; TwrBsF " << out.tower_base_loads.head<3>().transpose()
+       << " vs " << force.transpose() << "; TwrBsM " << out.tower_base_loads.tail<3>().transpose() << " vs " << moment.transpose());
+  // 1e-9 relative: both are sums of the same ~100 terms in double precision.
+  CHECK((out.tower_base_loads.head<3>() - force).norm() < 1e-9 * force.norm());
+  CHECK((out.tower_base_loads.tail<3>() - moment).norm() < 1e-9 * moment.norm());
+  const std::vector<ChannelInfo> names = Multibody::channels(m);
+  REQUIRE(names.size() == static_cast<std::size_t>(kChannelCount + kTowerChannelCount));
+  CHECK(names[kChannelCount].name == "TTDspFA");
+  CHECK(out.channels[kChannelCount] == Approx(s.tower_deflection_m[0] + s.tower_deflection_m[1]).epsilon(1e-12));
+  CHECK(out.channels[kChannelCount + 1] == Approx(s.tower_deflection_m[2] + s.tower_deflection_m[3]).margin(1e-15));
 }
