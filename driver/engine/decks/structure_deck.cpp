@@ -127,6 +127,10 @@ const DeckSection<multibody::Params>& structure_section() {
                                                                      "the blade tip must stay below the speed of sound)"),
              &InitialConditions::rotor_speed_rpm)
         .key("nacelle_yaw_deg", bounded(-180.0, 180.0, "NacYaw (half a turn either way)"), &InitialConditions::nacelle_yaw_deg)
+        .key("tower_top_deflection_m", Schema::sequence(Schema::number().at_least(-20.0).at_most(20.0)).min_items(2).max_items(2)
+                                           .optional().doc("TTDspFA, TTDspSS (flexible tower; on the 1st mode of each "
+                                                           "direction; ±20 m: a quarter of a tower's height)"),
+             &InitialConditions::tower_top_deflection_m)
         .key("blade_pitch_deg", bounded(-90.0, 90.0, "BlPitch: initial pitch of every blade, held until the controller's "
                                                      "first call (90° is feathered; beyond, the blade faces backwards)"),
              &InitialConditions::blade_pitch_deg);

@@ -76,6 +76,10 @@ State initial_state(const Model& model) {
   s.generator_azimuth_rad = s.rotor_azimuth_rad;
   s.generator_speed_rad_s = s.rotor_speed_rad_s;
   s.nacelle_yaw_rad = ic.nacelle_yaw_deg * kDeg;
+  // Tower-top deflections go to the first mode of each direction, as ElastoDyn does (q = TTDsp).
+  const FlexibleTower& tower = model.flexible_tower;
+  if (tower.fore_aft_count > 0) s.tower_deflection_m[0] = ic.tower_top_deflection_m[0];
+  if (tower.mode_count > tower.fore_aft_count) s.tower_deflection_m[tower.fore_aft_count] = ic.tower_top_deflection_m[1];
   // A held platform DOF does not move (u = [v_ref in g; ω in b], DOFs 0…5 in that order).
   for (int i = 0; i < 3; ++i) {
     if (model.acceleration_given[kSurge + i]) s.velocity_m_s[i] = 0.0;

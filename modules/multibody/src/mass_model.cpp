@@ -210,6 +210,10 @@ void validate(const Params& p) {
   finite(ic.azimuth_deg, "initial_conditions.azimuth_deg");
   finite(ic.rotor_speed_rpm, "initial_conditions.rotor_speed_rpm");
   finite(ic.nacelle_yaw_deg, "initial_conditions.nacelle_yaw_deg");
+  finite(ic.tower_top_deflection_m[0], "initial_conditions.tower_top_deflection_m[0]");
+  finite(ic.tower_top_deflection_m[1], "initial_conditions.tower_top_deflection_m[1]");
+  if (!p.tower.flexible && (ic.tower_top_deflection_m[0] != 0.0 || ic.tower_top_deflection_m[1] != 0.0))
+    e.add("structure.initial_conditions.tower_top_deflection_m: needs structure.tower.flexible: true");
   e.throw_if_any();
 }
 

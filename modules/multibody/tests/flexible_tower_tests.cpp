@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <catch2/catch.hpp>
 
+#include "fowtsim/core/error.hpp"
 #include "fowtsim/flexbody/axial_force.hpp"
 #include "fowtsim/flexbody/integrals.hpp"
 #include "fowtsim/flexbody/quadrature.hpp"
@@ -273,4 +274,20 @@ TEST_CASE("tower-base loads of the deflected OC3 tower in static equilibrium equ
   CHECK(names[kChannelCount].name == "TTDspFA");
   CHECK(out.channels[kChannelCount] == Approx(s.tower_deflection_m[0] + s.tower_deflection_m[1]).epsilon(1e-12));
   CHECK(out.channels[kChannelCount + 1] == Approx(s.tower_deflection_m[2] + s.tower_deflection_m[3]).margin(1e-15));
+}
+
+TEST_CASE("initial tower-top deflections go to the first mode of each direction", "[unit][multibody][flexible_tower]") {
+  Params p = oc3_hywind_params();
+  p.initial_conditions.tower_top_deflection_m = {0.25, -0.1};
+  CHECK_THROWS_AS(make_model(p), InputError);  // rigid tower: the key needs the flexible one
+  set_oc3_flexible_tower(p);
+  const Model m = make_model(p);
+  const State s = initial_state(m);
+  CHECK(s.tower_deflection_m[0] == 0.25);
+  CHECK(s.tower_deflection_m[1] == 0.0);
+  CHECK(s.tower_deflection_m[2] == -0.1);
+  CHECK(s.tower_deflection_m[3] == 0.0);
+  const Output out = Multibody::outputs(m, AppliedLoads{}, s);
+  CHECK(out.channels[kChannelCount] == Approx(0.25).epsilon(1e-12));       // TTDspFA (φ(H) = 1)
+  CHECK(out.channels[kChannelCount + 1] == Approx(-0.1).epsilon(1e-12));   // TTDspSS
 }

@@ -93,6 +93,7 @@ struct InitialConditions {
   double azimuth_deg = 0.0;               // Azimuth: blade 1 up at 0, + about the shaft axis (downwind) [deg]
   double rotor_speed_rpm = 0.0;           // RotSpeed [rpm]; negative spins backwards
   double nacelle_yaw_deg = 0.0;           // NacYaw [deg] (fixed yaw, or start of a prescribed one)
+  std::array<double, 2> tower_top_deflection_m{};  // TTDspFA, TTDspSS: put on the 1st FA / SS mode (ElastoDyn); flexible tower only [m]
   double blade_pitch_deg = 0.0;           // BlPitch [deg]: every blade's, held until the controller's first call
                                           // (the rotor aerodynamics and the flexible blades take it; the chain does not)
 };
