@@ -57,7 +57,23 @@ const DeckSection<multibody::Params>& structure_section() {
         .key("station_fraction", Schema::sequence(Schema::number()).min_items(2).doc("HtFract, 0 … 1"), &TowerParams::station_fraction)
         .key("mass_density_kg_m", Schema::sequence(Schema::number()).min_items(2).doc("TMassDen at the stations"),
              &TowerParams::mass_density_kg_m)
-        .key("mass_density_scale", Schema::number().at_least(0.0).default_value(1.0).doc("AdjTwMa"), &TowerParams::mass_density_scale);
+        .key("mass_density_scale", Schema::number().at_least(0.0).default_value(1.0).doc("AdjTwMa"), &TowerParams::mass_density_scale)
+        .key("flexible", Schema::boolean().default_value(false).doc("TwFADOF/TwSSDOF: tower bending modes as DOFs (else rigid)"),
+             &TowerParams::flexible)
+        .key("fore_aft_stiffness_N_m2", Schema::sequence(Schema::number()).optional().doc("TwFAStif at the stations (flexible)"),
+             &TowerParams::fore_aft_stiffness_N_m2)
+        .key("side_side_stiffness_N_m2", Schema::sequence(Schema::number()).optional().doc("TwSSStif at the stations (flexible)"),
+             &TowerParams::side_side_stiffness_N_m2)
+        .key("fore_aft_mode_shapes", Schema::sequence(Schema::sequence(Schema::number()).min_items(5).max_items(5)).optional()
+                                         .doc("TwFAM1Sh(2..6), TwFAM2Sh(2..6): one row of 5 per fore-aft mode (flexible)"),
+             &TowerParams::fore_aft_mode_shapes)
+        .key("side_side_mode_shapes", Schema::sequence(Schema::sequence(Schema::number()).min_items(5).max_items(5)).optional()
+                                          .doc("TwSSM1Sh(2..6), TwSSM2Sh(2..6): one row of 5 per side-side mode (flexible)"),
+             &TowerParams::side_side_mode_shapes)
+        .key("fore_aft_damping_percent", Schema::sequence(Schema::number().at_least(0.0)).optional().doc("TwrFADmp per mode [%]"),
+             &TowerParams::fore_aft_damping_percent)
+        .key("side_side_damping_percent", Schema::sequence(Schema::number().at_least(0.0)).optional().doc("TwrSSDmp per mode [%]"),
+             &TowerParams::side_side_damping_percent);
     DeckSection<NacelleParams> nacelle;
     nacelle.key("mass_kg", non_negative("NacMass"), &NacelleParams::mass_kg)
         .key("cm_m", number_vector(3, "NacCMxn, NacCMyn, NacCMzn from the tower top"), &NacelleParams::cm_m)
@@ -111,6 +127,10 @@ const DeckSection<multibody::Params>& structure_section() {
                                                                      "the blade tip must stay below the speed of sound)"),
              &InitialConditions::rotor_speed_rpm)
         .key("nacelle_yaw_deg", bounded(-180.0, 180.0, "NacYaw (half a turn either way)"), &InitialConditions::nacelle_yaw_deg)
+        .key("tower_top_deflection_m", Schema::sequence(Schema::number().at_least(-20.0).at_most(20.0)).min_items(2).max_items(2)
+                                           .optional().doc("TTDspFA, TTDspSS (flexible tower; on the 1st mode of each "
+                                                           "direction; ±20 m: a quarter of a tower's height)"),
+             &InitialConditions::tower_top_deflection_m)
         .key("blade_pitch_deg", bounded(-90.0, 90.0, "BlPitch: initial pitch of every blade, held until the controller's "
                                                      "first call (90° is feathered; beyond, the blade faces backwards)"),
              &InitialConditions::blade_pitch_deg);

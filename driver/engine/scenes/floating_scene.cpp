@@ -227,7 +227,8 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
     if (k < 3) b.position_m[k] += h;
     else if (k < 6) b.orientation = (b.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(h, Vec3::Unit(k - 3)))).normalized();
     else if (k == multibody::kRotor) b.rotor_azimuth_rad += h;
-    else b.generator_azimuth_rad += h;
+    else if (k == multibody::kGenerator) b.generator_azimuth_rad += h;
+    else b.tower_deflection_m[k - multibody::kTower] += h;
     return b;
   };
   auto sped_up = [&](int k, double h) {
@@ -235,8 +236,9 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
     if (k < 3) b.velocity_m_s[k] += h;
     else if (k < 6) b.angular_velocity_rad_s[k - 3] += h;
     else if (k == multibody::kRotor) b.rotor_speed_rad_s += h;
-    else b.generator_speed_rad_s += h;
-    if (model_.dof_count == multibody::kRotor + 1) b.generator_speed_rad_s = b.rotor_speed_rad_s;  // rigid shaft
+    else if (k == multibody::kGenerator) b.generator_speed_rad_s += h;
+    else b.tower_deflection_rate_m_s[k - multibody::kTower] += h;
+    if (model_.generator_dof == multibody::kRotor) b.generator_speed_rad_s = b.rotor_speed_rad_s;  // rigid shaft
     return b;
   };
   // Steps of 1e-4 m (rad) and 1e-4 m/s (rad/s): central differences are then accurate to ~1e-8 of
@@ -318,7 +320,7 @@ void FloatingScene::row(double t, const FloatingState& s, std::span<double> out)
   const std::span<double> v(values_);
   if (body_block_.written || sea_block_.written) {  // the hydro channels take the platform's acceleration
     const multibody::Output mo = multibody::Multibody::outputs(model_, loads, s.body, t);
-    std::copy(mo.channels.begin(), mo.channels.end(), v.begin());
+    std::copy(mo.channels.begin(), mo.channels.begin() + body_block_.count, v.begin());
     Vec6 acceleration;
     acceleration << mo.platform_acceleration_m_s2, mo.platform_angular_acceleration_rad_s2;
     if (sea_block_.written) sea_->channel_values(t, row_sea_, acceleration, v.subspan(sea_block_.first, sea_block_.count));

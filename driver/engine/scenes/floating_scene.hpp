@@ -94,6 +94,7 @@ class FloatingScene {
   // x: InputError with them.
   Eigen::MatrixXd linearised_system(double t, const FloatingState& s);
   int dof_count() const { return model_.dof_count; }
+  int tower_fore_aft_modes() const { return model_.flexible_tower.fore_aft_count; }
   const wind::WindField* wind() const { return rotor_ ? &rotor_->wind() : nullptr; }
   const SeaModules& sea() const { return *sea_; }
   int substeps() const { return blades_ ? blades_->substeps() : 1; }  // small steps per large step

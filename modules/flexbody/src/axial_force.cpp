@@ -13,7 +13,8 @@ namespace {
 AxialForce tip_integral(const BeamStations& s, double a, double b) {
   const std::size_t n = s.x.size();
   const auto f = [a, b](double m, double x) { return m * (a + b * x); };
-  const auto simpson = [&](double x0, double m0, double x1, double m1) {
+  // f by value: the returned function outlives this frame (a [&] capture dangled).
+  const auto simpson = [f](double x0, double m0, double x1, double m1) {
     return (x1 - x0) / 6.0 * (f(m0, x0) + 4.0 * f(0.5 * (m0 + m1), 0.5 * (x0 + x1)) + f(m1, x1));
   };
   std::vector<double> tail(n, 0.0);  // ∫_{x_i}^L

@@ -8,8 +8,10 @@
 namespace fowtsim::multibody {
 namespace {
 
-// y = [r (3), quaternion w x y z (4), ψ, θ_g, v (3), ω_b (3), ψ̇, θ̇_g] — 17 numbers.
-using Vector17 = Eigen::Matrix<double, 17, 1>;
+// y = [r (3), quaternion w x y z (4), ψ, θ_g, v (3), ω_b (3), ψ̇, θ̇_g, tower q (4), q̇ (4)] —
+// 25 numbers (the tower entries stay zero with a rigid tower).
+constexpr int kStateSize = 17 + 2 * kMaxTowerModes;
+using Vector17 = Eigen::Matrix<double, kStateSize, 1>;
 
 Vector17 pack(const State& s) {
   Vector17 y;
@@ -21,6 +23,10 @@ Vector17 pack(const State& s) {
   y.segment<3>(12) = s.angular_velocity_rad_s;
   y[15] = s.rotor_speed_rad_s;
   y[16] = s.generator_speed_rad_s;
+  for (int j = 0; j < kMaxTowerModes; ++j) {
+    y[17 + j] = s.tower_deflection_m[j];
+    y[17 + kMaxTowerModes + j] = s.tower_deflection_rate_m_s[j];
+  }
   return y;
 }
 
@@ -33,6 +39,10 @@ void unpack(const Vector17& y, State& s) {
   s.angular_velocity_rad_s = y.segment<3>(12);
   s.rotor_speed_rad_s = y[15];
   s.generator_speed_rad_s = y[16];
+  for (int j = 0; j < kMaxTowerModes; ++j) {
+    s.tower_deflection_m[j] = y[17 + j];
+    s.tower_deflection_rate_m_s[j] = y[17 + kMaxTowerModes + j];
+  }
 }
 
 void set_yaw(const Model& model, LoadProvider& provider, double t, State& s) {
@@ -75,7 +85,12 @@ Vector17 derivative(const Model& model, LoadProvider& provider, double t, const 
   d.segment<3>(9) = eval.acceleration.segment<3>(kSurge);
   d.segment<3>(12) = eval.acceleration.segment<3>(kRoll);
   d[15] = eval.acceleration[kRotor];
-  if (model.dof_count > kGenerator) {
+  d.tail<2 * kMaxTowerModes>().setZero();
+  for (int j = 0; j < model.flexible_tower.mode_count; ++j) {
+    d[17 + j] = scratch.tower_deflection_rate_m_s[j];
+    d[17 + kMaxTowerModes + j] = eval.acceleration[kTower + j];
+  }
+  if (model.generator_dof == kGenerator) {
     d[8] = scratch.generator_speed_rad_s;
     d[16] = eval.acceleration[kGenerator];
   } else {  // rigid shaft: the generator follows the rotor
@@ -104,7 +119,7 @@ void Multibody::advance(const Model& model, LoadProvider& provider, double t, do
     const Vector17 k4 = derivative(model, provider, ti + h, y + h * k3, scratch, eval);
     y += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
     y.segment<4>(3).normalize();
-    for (int j = 0; j < 17; ++j) {
+    for (int j = 0; j < kStateSize; ++j) {
       if (!std::isfinite(y[j])) {
         throw NumericalError({"multibody", ti + h, "state entry " + std::to_string(j),
                               "reduce max_step_s or dt; check the applied loads"},

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <type_traits>
 
 #include <Eigen/Cholesky>
 
@@ -42,7 +43,8 @@ void add_added_mass(const ChainKinematics& k, const Mat6& added_mass, Generalise
   m.noalias() += p.transpose() * added_mass * p;
 }
 
-GeneralisedMatrix assemble_mass(const Model& model, const ChainKinematics& k, const Mat6& added_mass) {
+GeneralisedMatrix assemble_mass(const Model& model, const State& state, const ChainKinematics& k,
+                                const Mat6& added_mass) {
   BodyView views[4];
   const int n = body_views(model, k, views);
   GeneralisedMatrix m = GeneralisedMatrix::Zero();
@@ -50,6 +52,11 @@ GeneralisedMatrix assemble_mass(const Model& model, const ChainKinematics& k, co
     const BodyView& b = views[i];
     m.noalias() += b.mass * b.cm->jacobian.transpose() * b.cm->jacobian;
     m.noalias() += b.rotation->jacobian.transpose() * b.inertia_g * b.rotation->jacobian;
+  }
+  // Flexible tower: its lumped stations (point masses) with their elastic Jacobian columns.
+  for (const TowerStation& st : model.flexible_tower.stations) {
+    const PointKinematics p = tower_station(model, state, k, st);
+    m.noalias() += st.mass_kg * p.jacobian.transpose() * p.jacobian;
   }
   add_added_mass(k, added_mass, m);
   return m;
@@ -69,6 +76,10 @@ State initial_state(const Model& model) {
   s.generator_azimuth_rad = s.rotor_azimuth_rad;
   s.generator_speed_rad_s = s.rotor_speed_rad_s;
   s.nacelle_yaw_rad = ic.nacelle_yaw_deg * kDeg;
+  // Tower-top deflections go to the first mode of each direction, as ElastoDyn does (q = TTDsp).
+  const FlexibleTower& tower = model.flexible_tower;
+  if (tower.fore_aft_count > 0) s.tower_deflection_m[0] = ic.tower_top_deflection_m[0];
+  if (tower.mode_count > tower.fore_aft_count) s.tower_deflection_m[tower.fore_aft_count] = ic.tower_top_deflection_m[1];
   // A held platform DOF does not move (u = [v_ref in g; ω in b], DOFs 0…5 in that order).
   for (int i = 0; i < 3; ++i) {
     if (model.acceleration_given[kSurge + i]) s.velocity_m_s[i] = 0.0;
@@ -80,14 +91,14 @@ State initial_state(const Model& model) {
 GeneralisedMatrix generalised_mass(const Model& model, const State& state, const Mat6& added_mass) {
   ChainKinematics k;
   chain_kinematics(model, state, k);
-  return assemble_mass(model, k, added_mass);
+  return assemble_mass(model, state, k, added_mass);
 }
 
 void evaluate(const Model& model, const State& state, const AppliedLoads& loads, double t,
               Evaluation& out) {
   ChainKinematics& k = out.kinematics;
   chain_kinematics(model, state, k);
-  out.mass = assemble_mass(model, k, loads.platform_added_mass);
+  out.mass = assemble_mass(model, state, k, loads.platform_added_mass);
 
   GeneralisedVector& f = out.force;
   f.setZero();
@@ -102,6 +113,23 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
     f.noalias() -= b.rotation->jacobian.transpose() *
                    (b.inertia_g * b.rotation->bias_angular_acceleration_rad_s2 + w.cross(b.inertia_g * w));
   }
+  // Flexible tower: weight and bias inertia of the stations; elastic (K_q), geometric (K^T from
+  // the weight above, with gravity) and structural damping forces on the modal coordinates.
+  const FlexibleTower& tower = model.flexible_tower;
+  for (const TowerStation& st : tower.stations) {
+    const PointKinematics p = tower_station(model, state, k, st);
+    f.noalias() += p.jacobian.transpose() * (st.mass_kg * (gravity - p.bias_acceleration_m_s2));
+  }
+  for (int i = 0; i < tower.mode_count; ++i) {
+    double elastic = 0.0;
+    for (int j = 0; j < tower.mode_count; ++j) {
+      const double stiffness = tower.stiffness(i, j) +
+                               (loads.gravity ? model.params.gravity_m_s2 * tower.geometric_stiffness_per_g(i, j) : 0.0);
+      elastic += stiffness * state.tower_deflection_m[j] + tower.damping(i, j) * state.tower_deflection_rate_m_s[j];
+    }
+    f[kTower + i] -= elastic;
+  }
+
   // Added mass: its bias part −Pᵀ A [a_r,bias; α_bias] vanishes because a_r = v̇ and α = T_gb ω̇_b
   // have no velocity-product terms in these generalised speeds.
 
@@ -125,7 +153,7 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
 
   // Drivetrain: generator torque on the HSS (LSS-equivalent N T), shaft spring and damper.
   f[model.generator_dof] -= model.gearbox_ratio * loads.generator_torque_N_m;
-  if (model.dof_count > kGenerator) {
+  if (model.generator_dof == kGenerator) {
     const DrivetrainParams& d = model.params.drivetrain;
     const double torque = d.torsional_stiffness_N_m_rad * (state.rotor_azimuth_rad - state.generator_azimuth_rad) +
                           d.torsional_damping_N_m_s_rad * (state.rotor_speed_rad_s - state.generator_speed_rad_s);
@@ -133,19 +161,20 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
     f[kGenerator] += torque;
   }
 
-  // Solve; with a rigid shaft the unused last row is made the identity so one fixed-size
-  // Cholesky serves both cases.
+  // Solve; unused rows (the generator with a rigid shaft, tower rows beyond the model's modes)
+  // are made the identity so one fixed-size Cholesky serves every case.
   GeneralisedMatrix m = out.mass;
-  if (model.dof_count < kMaxDofs) {
-    m(kGenerator, kGenerator) = 1.0;
-    f[kGenerator] = 0.0;
+  for (int i = kGenerator; i < kMaxDofs; ++i) {
+    if (dof_active(model, i)) continue;
+    m(i, i) = 1.0;
+    f[i] = 0.0;
   }
   // Given accelerations (held DOFs, prescribed spin): move their columns to the right-hand side
   // and replace their rows by u̇_i = given.
   for (int i = 0; i < model.dof_count; ++i) {
     if (!model.acceleration_given[i]) continue;
     const bool prescribed = model.params.dofs.rotor == RotorSpin::prescribed;
-    const double a = !prescribed || i < kRotor ? 0.0
+    const double a = !prescribed || i < kRotor || i >= kTower ? 0.0
                      : i == kRotor             ? state.rotor_acceleration_rad_s2
                                                : state.generator_acceleration_rad_s2;
     f.noalias() -= m.col(i) * a;
@@ -154,13 +183,25 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
     m(i, i) = 1.0;
     f[i] = a;
   }
-  const Eigen::LLT<GeneralisedMatrix> llt(m);
-  if (llt.info() != Eigen::Success) {
-    throw NumericalError({"multibody", t, "mass matrix M(q)",
-                          "check the added mass handed in (it must be symmetric positive semi-definite)"},
-                         "the generalised mass matrix is not positive definite");
+  // The rigid-tower model solves its 8 × 8 block with the same fixed-size Cholesky as before the
+  // tower DOFs existed (bit-identical results); the flexible one the whole matrix.
+  auto solve = [&](const auto& block, const auto& rhs) {
+    const Eigen::LLT<std::remove_cvref_t<decltype(block)>> llt(block);
+    if (llt.info() != Eigen::Success) {
+      throw NumericalError({"multibody", t, "mass matrix M(q)",
+                            "check the added mass handed in (it must be symmetric positive semi-definite)"},
+                           "the generalised mass matrix is not positive definite");
+    }
+    return llt.solve(rhs).eval();
+  };
+  if (model.flexible_tower.mode_count == 0) {
+    const Eigen::Matrix<double, kTower, kTower> rigid = m.topLeftCorner<kTower, kTower>();
+    const Eigen::Matrix<double, kTower, 1> rigid_f = f.head<kTower>();
+    out.acceleration.setZero();
+    out.acceleration.head<kTower>() = solve(rigid, rigid_f);
+  } else {
+    out.acceleration = solve(m, f);
   }
-  out.acceleration = llt.solve(f);
   for (int i = 0; i < kMaxDofs; ++i) {
     if (!std::isfinite(out.acceleration[i])) {
       throw NumericalError({"multibody", t, "generalised acceleration u̇[" + std::to_string(i) + "]",
@@ -185,7 +226,20 @@ Invariants invariants(const Model& model, const State& state, bool gravity) {
     inv.angular_momentum_N_m_s += b.cm->position_m.cross(b.mass * v) + b.inertia_g * w;
     if (gravity) inv.potential_energy_J += b.mass * model.params.gravity_m_s2 * b.cm->position_m.z();
   }
-  if (model.dof_count > kGenerator) {
+  const FlexibleTower& tower = model.flexible_tower;
+  for (const TowerStation& st : tower.stations) {
+    const PointKinematics p = tower_station(model, state, k, st);
+    inv.kinetic_energy_J += 0.5 * st.mass_kg * p.velocity_m_s.squaredNorm();
+    inv.linear_momentum_N_s += st.mass_kg * p.velocity_m_s;
+    inv.angular_momentum_N_m_s += p.position_m.cross(st.mass_kg * p.velocity_m_s);
+    if (gravity) inv.potential_energy_J += st.mass_kg * model.params.gravity_m_s2 * p.position_m.z();
+  }
+  for (int i = 0; i < tower.mode_count; ++i)
+    for (int j = 0; j < tower.mode_count; ++j)
+      inv.potential_energy_J += 0.5 * state.tower_deflection_m[i] * state.tower_deflection_m[j] *
+                                (tower.stiffness(i, j) + (gravity ? model.params.gravity_m_s2 *
+                                                                        tower.geometric_stiffness_per_g(i, j) : 0.0));
+  if (model.generator_dof == kGenerator) {
     const double twist = state.rotor_azimuth_rad - state.generator_azimuth_rad;
     inv.potential_energy_J += 0.5 * model.params.drivetrain.torsional_stiffness_N_m_rad * twist * twist;
   }

@@ -28,14 +28,49 @@ RotationKinematics child_rotation(const RotationKinematics& parent, const Mat3& 
   return c;
 }
 
+// Adds the elastic displacement Σ q_j φ_j d_j (b) of a point of the base body to its kinematics
+// from point_on(): position, velocity T_gb Σ q̇_j φ_j d_j, Jacobian columns kTower + j and the
+// Coriolis bias 2 ω × v_rel (the relative acceleration's own bias is zero, φ fixed in b).
+void add_elastic(const Model& model, const State& state, const RotationKinematics& base,
+                 const std::array<double, kMaxTowerModes>& shape, PointKinematics& p) {
+  const FlexibleTower& t = model.flexible_tower;
+  Vec3 v_rel = Vec3::Zero();
+  for (int j = 0; j < t.mode_count; ++j) {
+    const Vec3 column = base.orientation * (shape[j] * t.direction_b[j]);
+    p.jacobian.col(kTower + j) += column;
+    v_rel += state.tower_deflection_rate_m_s[j] * column;
+  }
+  p.velocity_m_s += v_rel;
+  p.bias_acceleration_m_s2 += 2.0 * base.angular_velocity_rad_s.cross(v_rel);
+}
+
+// Position in b of a base-body point with elastic displacement.
+Vec3 deflected(const Model& model, const State& state, const Vec3& position_b,
+               const std::array<double, kMaxTowerModes>& shape) {
+  const FlexibleTower& t = model.flexible_tower;
+  Vec3 x = position_b;
+  for (int j = 0; j < t.mode_count; ++j) x += state.tower_deflection_m[j] * shape[j] * t.direction_b[j];
+  return x;
+}
+
 }  // namespace
+
+PointKinematics tower_station(const Model& model, const State& state, const ChainKinematics& chain,
+                              const TowerStation& station) {
+  const Mat3& t_gb = chain.base.orientation;
+  PointKinematics p = point_on(chain.reference, chain.base,
+                               chain.reference.position_m + t_gb * deflected(model, state, station.position_b, station.shape));
+  add_elastic(model, state, chain.base, station.shape, p);
+  return p;
+}
 
 GeneralisedVector generalised_velocities(const Model& model, const State& state) {
   GeneralisedVector u = GeneralisedVector::Zero();
   u.segment<3>(kSurge) = state.velocity_m_s;
   u.segment<3>(kRoll) = state.angular_velocity_rad_s;
   u[kRotor] = state.rotor_speed_rad_s;
-  if (model.dof_count > kGenerator) u[kGenerator] = state.generator_speed_rad_s;
+  if (model.generator_dof == kGenerator) u[kGenerator] = state.generator_speed_rad_s;
+  for (int j = 0; j < model.flexible_tower.mode_count; ++j) u[kTower + j] = state.tower_deflection_rate_m_s[j];
   return u;
 }
 
@@ -75,11 +110,40 @@ void chain_kinematics(const Model& model, const State& state, ChainKinematics& o
   out.base_cm = point_on(r, b, r.position_m + t_gb * model.base.cm_m);
   out.tower_cm = point_on(r, b, r.position_m + t_gb * model.tower.cm_m);
   out.tower_base = point_on(r, b, r.position_m + t_gb * model.tower_base_b);
-  out.tower_top = point_on(r, b, r.position_m + t_gb * model.tower_top_b);
+  const FlexibleTower& tower = model.flexible_tower;
+  if (tower.mode_count == 0) {
+    out.tower_top = point_on(r, b, r.position_m + t_gb * model.tower_top_b);
+    out.tower_top_frame = b;
+  } else {
+    // Deflected top, and the top frame T_bt = R_x(θ_x) R_y(θ_y) with θ_y = Σ_FA φ'(H) q,
+    // θ_x = −Σ_SS φ'(H) q: two successive relative rotations, each linear in q (no θ̈ bias).
+    out.tower_top = point_on(r, b, r.position_m + t_gb * deflected(model, state, model.tower_top_b, tower.top_shape));
+    add_elastic(model, state, b, tower.top_shape, out.tower_top);
+    double theta_x = 0.0, theta_y = 0.0, rate_x = 0.0, rate_y = 0.0;
+    std::array<double, kMaxTowerModes> dx{}, dy{};
+    for (int j = 0; j < tower.mode_count; ++j) {
+      if (j < tower.fore_aft_count) dy[j] = tower.top_slope[j];
+      else dx[j] = -tower.top_slope[j];
+      theta_x += dx[j] * state.tower_deflection_m[j];
+      theta_y += dy[j] * state.tower_deflection_m[j];
+      rate_x += dx[j] * state.tower_deflection_rate_m_s[j];
+      rate_y += dy[j] * state.tower_deflection_rate_m_s[j];
+    }
+    auto turn = [&](const RotationKinematics& parent, const Mat3& orientation, const Vec3& e, double rate,
+                    const std::array<double, kMaxTowerModes>& d) {
+      RotationKinematics c = child_rotation(parent, orientation, e, rate, 0.0, -1, 0.0);
+      for (int j = 0; j < tower.mode_count; ++j) c.jacobian.col(kTower + j) += d[j] * e;
+      return c;
+    };
+    const Mat3 t_g1 = t_gb * rotation_x(theta_x);
+    const RotationKinematics first = turn(b, t_g1, t_gb.col(0), rate_x, dx);
+    out.tower_top_frame = turn(first, t_g1 * rotation_y(theta_y), t_g1.col(1), rate_y, dy);
+  }
 
-  // Nacelle: prescribed yaw about z_b.
-  const Mat3 t_gn = t_gb * rotation_z(state.nacelle_yaw_rad);
-  out.nacelle = child_rotation(b, t_gn, t_gb.col(2), state.nacelle_yaw_rate_rad_s,
+  // Nacelle: prescribed yaw about the tower-top z axis (z_b with a rigid tower).
+  const RotationKinematics& top_frame = out.tower_top_frame;
+  const Mat3 t_gn = top_frame.orientation * rotation_z(state.nacelle_yaw_rad);
+  out.nacelle = child_rotation(top_frame, t_gn, top_frame.orientation.col(2), state.nacelle_yaw_rate_rad_s,
                                state.nacelle_yaw_acceleration_rad_s2, -1, 0.0);
   const Vec3& top = out.tower_top.position_m;
   out.nacelle_cm = point_on(out.tower_top, out.nacelle, top + t_gn * model.nacelle.cm_m);
@@ -92,7 +156,7 @@ void chain_kinematics(const Model& model, const State& state, ChainKinematics& o
   const Vec3 e_s = out.shaft.orientation.col(0);
   out.rotor = child_rotation(out.nacelle, out.shaft.orientation * rotation_x(state.rotor_azimuth_rad),
                              e_s, u[kRotor], 0.0, kRotor, 1.0);
-  const double generator_rate = model.dof_count > kGenerator ? u[kGenerator] : u[kRotor];
+  const double generator_rate = model.generator_dof == kGenerator ? u[kGenerator] : u[kRotor];
   out.generator = child_rotation(out.nacelle, out.shaft.orientation, e_s, ratio * generator_rate,
                                  0.0, model.generator_dof, ratio);
 

@@ -9,6 +9,10 @@
 
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/rotation.hpp"
+#include "fowtsim/flexbody/axial_force.hpp"
+#include "fowtsim/flexbody/integrals.hpp"
+#include "fowtsim/flexbody/quadrature.hpp"
+#include "fowtsim/flexbody/shape_functions.hpp"
 #include "fowtsim/multibody/dynamics.hpp"
 #include "fowtsim/multibody/model.hpp"
 
@@ -115,6 +119,45 @@ void validate(const Params& p) {
       finite_nonneg(p.tower.mass_density_kg_m[i], "tower.mass_density_kg_m[" + std::to_string(i) + "]");
     }
   }
+  if (p.tower.flexible) {
+    const std::size_t n = p.tower.station_fraction.size();
+    auto stiffness = [&](const std::vector<double>& ei, const std::string& key) {
+      if (ei.size() != n) {
+        e.add("structure.tower." + key + ": expected one value per station (" + std::to_string(n) + "), got " +
+              std::to_string(ei.size()));
+        return;
+      }
+      for (std::size_t i = 0; i < n; ++i)
+        e.require(std::isfinite(ei[i]) && ei[i] > 0.0, "tower." + key + "[" + std::to_string(i) + "]", ei[i], "> 0");
+    };
+    stiffness(p.tower.fore_aft_stiffness_N_m2, "fore_aft_stiffness_N_m2");
+    stiffness(p.tower.side_side_stiffness_N_m2, "side_side_stiffness_N_m2");
+    const std::size_t modes = p.tower.fore_aft_mode_shapes.size() + p.tower.side_side_mode_shapes.size();
+    if (modes == 0 || modes > static_cast<std::size_t>(kMaxTowerModes))
+      e.add("structure.tower.fore_aft_mode_shapes / side_side_mode_shapes: expected 1 … " +
+            std::to_string(kMaxTowerModes) + " modes in all with a flexible tower, got " + std::to_string(modes));
+    auto shapes = [&](const std::vector<std::vector<double>>& c, const std::vector<double>& damping,
+                      const std::string& key, const std::string& damping_key) {
+      for (std::size_t j = 0; j < c.size(); ++j) {
+        if (c[j].size() != 5) {
+          e.add("structure.tower." + key + "[" + std::to_string(j) + "]: expected 5 coefficients (x^2 … x^6)");
+          continue;
+        }
+        double sum = 0.0;
+        for (double cj : c[j]) sum += cj;
+        e.require(std::abs(sum - 1.0) <= 1e-3, "tower." + key + "[" + std::to_string(j) + "] (sum)", sum,
+                  "coefficients adding up to 1 within 0.001 (ElastoDyn's rule)");
+      }
+      if (!damping.empty() && damping.size() != c.size())
+        e.add("structure.tower." + damping_key + ": expected one value per mode or none");
+      for (std::size_t j = 0; j < damping.size(); ++j)
+        finite_nonneg(damping[j], "tower." + damping_key + "[" + std::to_string(j) + "]");
+    };
+    shapes(p.tower.fore_aft_mode_shapes, p.tower.fore_aft_damping_percent, "fore_aft_mode_shapes",
+           "fore_aft_damping_percent");
+    shapes(p.tower.side_side_mode_shapes, p.tower.side_side_damping_percent, "side_side_mode_shapes",
+           "side_side_damping_percent");
+  }
   // Nacelle
   finite_nonneg(p.nacelle.mass_kg, "nacelle.mass_kg");
   finite_vec(p.nacelle.cm_m, "nacelle.cm_m");
@@ -167,7 +210,89 @@ void validate(const Params& p) {
   finite(ic.azimuth_deg, "initial_conditions.azimuth_deg");
   finite(ic.rotor_speed_rpm, "initial_conditions.rotor_speed_rpm");
   finite(ic.nacelle_yaw_deg, "initial_conditions.nacelle_yaw_deg");
+  finite(ic.tower_top_deflection_m[0], "initial_conditions.tower_top_deflection_m[0]");
+  finite(ic.tower_top_deflection_m[1], "initial_conditions.tower_top_deflection_m[1]");
+  if (!p.tower.flexible && (ic.tower_top_deflection_m[0] != 0.0 || ic.tower_top_deflection_m[1] != 0.0))
+    e.add("structure.initial_conditions.tower_top_deflection_m: needs structure.tower.flexible: true");
   e.throw_if_any();
+}
+
+// The flexible tower: shapes, integrals (flexbody), lumped stations at Gauss points (exact for
+// the polynomial shapes: m linear × φ_i φ_j of degree 13 ≤ 2·8 − 1) and the yaw-bearing mass.
+FlexibleTower make_flexible_tower(const Params& p, const Model& m, double top_mass_kg) {
+  using namespace fowtsim::flexbody;
+  FlexibleTower t;
+  const TowerParams& tp = p.tower;
+  const double length = tp.top_height_m - tp.base_height_m;
+  const int n_fa = static_cast<int>(tp.fore_aft_mode_shapes.size());
+  const int n_ss = static_cast<int>(tp.side_side_mode_shapes.size());
+  t.mode_count = n_fa + n_ss;
+  t.fore_aft_count = n_fa;
+  auto table = [&](const std::vector<double>& ei) {
+    BeamStations b;
+    for (std::size_t i = 0; i < tp.station_fraction.size(); ++i) {
+      b.x.push_back(tp.station_fraction[i] * length);
+      b.m.push_back(tp.mass_density_scale * tp.mass_density_kg_m[i]);
+      b.EI.push_back(ei[i]);
+    }
+    return b;
+  };
+  const BeamStations fa = table(tp.fore_aft_stiffness_N_m2), ss = table(tp.side_side_stiffness_N_m2);
+  std::vector<ShapeFunction> fa_shapes, ss_shapes;
+  auto coefficients = [](const std::vector<double>& c) { return std::array<double, 5>{c[0], c[1], c[2], c[3], c[4]}; };
+  for (const auto& c : tp.fore_aft_mode_shapes) fa_shapes.push_back(polynomial_shape(coefficients(c), length));
+  for (const auto& c : tp.side_side_mode_shapes) ss_shapes.push_back(polynomial_shape(coefficients(c), length));
+  const QuadratureRule station_rule{QuadratureRule::Kind::GaussLegendre, 1, 8};
+  const std::vector<QuadraturePoint> points = quadrature_points(fa, station_rule);
+  // Per direction: K_q, K^T per unit g (self-weight + top mass), M_q; block-diagonal in all.
+  auto block = [&](const BeamStations& b, const std::vector<ShapeFunction>& shapes, int offset) {
+    if (shapes.empty()) return;
+    const int n = static_cast<int>(shapes.size());
+    const SampledBody body = sample(quadrature_points(b), shapes);
+    const AxialForce self = self_weight_axial_force(b, 1.0);
+    const AxialForce top = top_mass_axial_force(top_mass_kg, 1.0);
+    const AxialForce both = [self, top](double x) { return self(x) + top(x); };
+    t.stiffness.block(offset, offset, n, n) = generalized_stiffness(body);
+    t.geometric_stiffness_per_g.block(offset, offset, n, n) = geometric_stiffness(body, both);
+    t.generalized_mass.block(offset, offset, n, n) = generalized_mass(body);
+  };
+  block(fa, fa_shapes, 0);
+  block(ss, ss_shapes, n_fa);
+  for (int j = 0; j < t.mode_count; ++j) {
+    const bool fore_aft = j < n_fa;
+    const ShapeFunction& shape = fore_aft ? fa_shapes[j] : ss_shapes[j - n_fa];
+    t.direction_b[j] = fore_aft ? Vec3::UnitX() : Vec3::UnitY();
+    const ShapeValue top = shape(length);
+    t.top_shape[j] = top.u;
+    t.top_slope[j] = top.nu;
+  }
+  // ElastoDyn's damping: C(:, l) = (ζ_l/100) K(:, l) / (π f_l), f_l the mode's own frequency
+  // without the top mass, sqrt(K_ll / M_ll) / 2π (ElastoDyn Coeff: CTFA, CTSS).
+  for (int l = 0; l < t.mode_count; ++l) {
+    const bool fore_aft = l < n_fa;
+    const auto& pct = fore_aft ? tp.fore_aft_damping_percent : tp.side_side_damping_percent;
+    const int index = fore_aft ? l : l - n_fa;
+    const double zeta = pct.empty() ? 0.0 : 0.01 * pct[index];
+    const double omega = std::sqrt(t.stiffness(l, l) / t.generalized_mass(l, l));
+    t.damping.col(l) = zeta * t.stiffness.col(l) * 2.0 / omega;
+  }
+  for (const QuadraturePoint& q : points) {
+    TowerStation s;
+    s.mass_kg = q.w * q.m;
+    s.position_b = m.tower_base_b + Vec3(0.0, 0.0, q.x);
+    for (int j = 0; j < t.mode_count; ++j) {
+      const bool fore_aft = j < n_fa;
+      s.shape[j] = (fore_aft ? fa_shapes[j] : ss_shapes[j - n_fa])(q.x).u;
+    }
+    t.stations.push_back(s);
+  }
+  TowerStation yaw_bearing;
+  yaw_bearing.mass_kg = p.nacelle.yaw_bearing_mass_kg;
+  yaw_bearing.position_b = m.tower_top_b;
+  for (int j = 0; j < t.mode_count; ++j) yaw_bearing.shape[j] = t.top_shape[j];
+  t.stations.push_back(yaw_bearing);
+  t.top_mass_kg = top_mass_kg;
+  return t;
 }
 
 }  // namespace
@@ -257,6 +382,14 @@ Model make_model(const Params& params) {
   m.generator_inertia_kg_m2 = p.drivetrain.generator_inertia_kg_m2;
   m.dof_count = p.drivetrain.torsional_flexibility ? 8 : 7;
   m.generator_dof = p.drivetrain.torsional_flexibility ? kGenerator : kRotor;
+  if (p.tower.flexible) {
+    // The tower's mass leaves the base body for the stations; the mass above the tower (nacelle,
+    // rotor, yaw bearing; ElastoDyn's TwrTpMass) compresses it (geometric stiffness).
+    const double top_mass = m.nacelle.mass_kg + m.rotor.mass_kg + p.nacelle.yaw_bearing_mass_kg;
+    m.flexible_tower = make_flexible_tower(p, m, top_mass);
+    m.base = platform;
+    m.dof_count = kTower + m.flexible_tower.mode_count;
+  }
 
   for (int i = 0; i < 6; ++i) m.acceleration_given[i] = !p.dofs.platform_free[i];
   if (p.dofs.rotor != RotorSpin::free) {
@@ -269,7 +402,7 @@ Model make_model(const Params& params) {
   const State s0 = initial_state(m);
   GeneralisedMatrix mass = generalised_mass(m, s0, Mat6::Zero());
   for (int i = 0; i < m.dof_count; ++i)
-    if (m.acceleration_given[i]) {
+    if (m.acceleration_given[i] || !dof_active(m, i)) {
       mass.row(i).setZero();
       mass.col(i).setZero();
       mass(i, i) = mass.diagonal().maxCoeff() + 1.0;
@@ -281,7 +414,7 @@ Model make_model(const Params& params) {
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(mass.topLeftCorner(m.dof_count, m.dof_count));
   if (!(eig.eigenvalues().minCoeff() > 1e-12 * scale)) {
     static const char* names[] = {"surge", "sway", "heave", "roll", "pitch", "yaw", "rotor azimuth",
-                                  "generator azimuth"};
+                                  "generator azimuth", "tower mode 1", "tower mode 2", "tower mode 3", "tower mode 4"};
     std::string which;
     for (int i = 0; i < m.dof_count; ++i) {
       if (diag[i] <= 1e-12 * scale) which += std::string(which.empty() ? "" : ", ") + names[i];
@@ -311,6 +444,12 @@ MassSummary mass_summary(const Model& model) {
   RigidBody all = in_b(model.base, k.base.orientation, k.base_cm.position_m);
   all = combine(all, in_b(model.nacelle, k.nacelle.orientation, k.nacelle_cm.position_m));
   all = combine(all, in_b(model.rotor, k.rotor.orientation, k.rotor_cm.position_m));
+  for (const TowerStation& st : model.flexible_tower.stations) {
+    Vec3 at = st.position_b;
+    for (int j = 0; j < model.flexible_tower.mode_count; ++j)
+      at += s0.tower_deflection_m[j] * st.shape[j] * model.flexible_tower.direction_b[j];
+    all = combine(all, point_mass(st.mass_kg, at));
+  }
   MassSummary s;
   s.mass_kg = all.mass_kg;
   s.cm_b_m = all.cm_m;

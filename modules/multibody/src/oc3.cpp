@@ -50,4 +50,18 @@ Params oc3_hywind_params() {
   return p;
 }
 
+void set_oc3_flexible_tower(Params& p) {
+  TowerParams& t = p.tower;
+  t.flexible = true;
+  t.fore_aft_stiffness_N_m2 = {6.03903e11, 5.17644e11, 4.40925e11, 3.73022e11, 3.13236e11, 2.60897e11,
+                               2.15365e11, 1.76028e11, 1.42301e11, 1.1363e11, 8.9488e10};
+  t.side_side_stiffness_N_m2 = t.fore_aft_stiffness_N_m2;
+  t.fore_aft_mode_shapes = {{0.8689, 0.2205, -0.0908, 0.1167, -0.1154},
+                            {42.5859, -18.6419, -20.357, -23.2686, 20.6816}};
+  t.side_side_mode_shapes = {{0.834, 0.2216, -0.0571, 0.0934, -0.0918},
+                             {60.2285, -27.5868, -30.3887, -33.6738, 32.4208}};
+  t.fore_aft_damping_percent = {1.0, 1.0};
+  t.side_side_damping_percent = {1.0, 1.0};
+}
+
 }  // namespace fowtsim::multibody

@@ -63,15 +63,23 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
   // carried down.
   const Vec3& base = k.tower_base.position_m;
   Vec6 tower = Vec6::Zero();
-  add_body(model.tower.mass_kg, model.tower.inertia_kg_m2, k.tower_cm, k.base, udot, gravity, base, tower);
+  const FlexibleTower& flexible = model.flexible_tower;
+  if (flexible.mode_count == 0) {
+    add_body(model.tower.mass_kg, model.tower.inertia_kg_m2, k.tower_cm, k.base, udot, gravity, base, tower);
+  } else {
+    for (const TowerStation& st : flexible.stations)
+      add_body(st.mass_kg, Mat3::Zero(), tower_station(model, state, k, st), k.base, udot, gravity, base, tower);
+  }
   tower.head<3>() += loads.tower_force_N;
   tower.tail<3>() += loads.tower_moment_N_m;
   tower.head<3>() += yaw.head<3>();
   tower.tail<3>() += yaw.tail<3>() + (top - base).cross(yaw.head<3>());
 
-  // Frames t (tower base) and p (yaw bearing) are parallel to b for a rigid tower.
+  // Frame t (tower base) is parallel to b; p (yaw bearing) too for a rigid tower, else tilted
+  // with the tower top.
+  const Mat3& t_gp = k.tower_top_frame.orientation;
   out.tower_base_loads << t_gb.transpose() * tower.head<3>(), t_gb.transpose() * tower.tail<3>();
-  out.yaw_bearing_loads << t_gb.transpose() * yaw.head<3>(), t_gb.transpose() * yaw.tail<3>();
+  out.yaw_bearing_loads << t_gp.transpose() * yaw.head<3>(), t_gp.transpose() * yaw.tail<3>();
 
   for (int i = 0; i < model.blade_count; ++i) {
     out.blade_root[i] = frame_motion(k.blade_root[i], k.rotor, k.blade_root_orientation[i], udot);
@@ -94,21 +102,31 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
   c[n++] = kRadToDeg * (state.rotor_azimuth_rad - two_pi * std::floor(state.rotor_azimuth_rad / two_pi));  // Azimuth
   c[n++] = kRadSToRpm * state.rotor_speed_rad_s;                                      // RotSpeed
   c[n++] = kRadSToRpm * model.gearbox_ratio *
-           (model.dof_count > kGenerator ? state.generator_speed_rad_s : state.rotor_speed_rad_s);  // GenSpeed
+           (model.generator_dof == kGenerator ? state.generator_speed_rad_s : state.rotor_speed_rad_s);  // GenSpeed
   c[n++] = kRadToDeg * udot[kRotor];                                                  // RotAccel
   c[n++] = kRadToDeg * state.nacelle_yaw_rad;                                         // NacYaw
-  c[n++] = kRadToDeg * (model.dof_count > kGenerator
+  c[n++] = kRadToDeg * (model.generator_dof == kGenerator
                             ? state.rotor_azimuth_rad - state.generator_azimuth_rad : 0.0);  // DrTrTwst
-  put3(t_gb.transpose() * acceleration(k.tower_top, udot), 1.0);                       // YawBrTAxp …
+  put3(t_gp.transpose() * acceleration(k.tower_top, udot), 1.0);                       // YawBrTAxp …
   put3(k.shaft.orientation.transpose() * acceleration(k.imu, udot), 1.0);              // NcIMUTAxs …
   put3(out.tower_base_loads.head<3>(), 1e-3);                                         // TwrBsFxt … (kN)
   put3(out.tower_base_loads.tail<3>(), 1e-3);                                         // TwrBsMxt … (kN·m)
   put3(out.yaw_bearing_loads.head<3>(), 1e-3);                                        // YawBrFxp …
   put3(out.yaw_bearing_loads.tail<3>(), 1e-3);                                        // YawBrMxp …
+  if (flexible.mode_count > 0) {
+    // Tower-top deflections in b (ElastoDyn's TTDspFA/SS: relative to the undeflected tower).
+    double fa = 0.0, ss = 0.0;
+    for (int j = 0; j < flexible.mode_count; ++j) {
+      const double d = flexible.top_shape[j] * state.tower_deflection_m[j];
+      (j < flexible.fore_aft_count ? fa : ss) += d;
+    }
+    c[n++] = fa;  // TTDspFA
+    c[n++] = ss;  // TTDspSS
+  }
   return out;
 }
 
-std::vector<ChannelInfo> Multibody::channels(const Model&) {
+std::vector<ChannelInfo> Multibody::channels(const Model& model) {
   const char* m = "multibody";
   std::vector<ChannelInfo> c;
   auto add = [&](const char* name, const char* unit, const char* description) {
@@ -156,6 +174,10 @@ std::vector<ChannelInfo> Multibody::channels(const Model&) {
   add("YawBrMxp", "kN-m", "yaw-bearing roll moment, about xp");
   add("YawBrMyp", "kN-m", "yaw-bearing pitch moment, about yp");
   add("YawBrMzp", "kN-m", "yaw-bearing yaw moment, about zp");
+  if (model.flexible_tower.mode_count > 0) {
+    add("TTDspFA", "m", "tower-top fore-aft deflection relative to the undeflected tower, xt");
+    add("TTDspSS", "m", "tower-top side-to-side deflection relative to the undeflected tower, yt");
+  }
   return c;
 }
 

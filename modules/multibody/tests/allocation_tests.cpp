@@ -48,3 +48,25 @@ TEST_CASE("channels() and the Output channel array agree in size", "[unit][multi
   const Model model = make_model(oc3_hywind_params());
   CHECK(Multibody::channels(model).size() == static_cast<std::size_t>(kChannelCount));
 }
+
+TEST_CASE("a flexible-tower step and its outputs allocate nothing", "[unit][multibody][flexible_tower]") {
+  Params p = oc3_hywind_params();
+  set_oc3_flexible_tower(p);
+  p.nacelle.yaw_prescribed = true;
+  p.initial_conditions.rotor_speed_rpm = 12.1;
+  p.initial_conditions.tower_top_deflection_m = {0.2, -0.05};
+  const Model model = make_model(p);
+  State s = Multibody::make_state(model);
+  SpringProvider provider;
+  AppliedLoads loads;
+  allocations = 0;
+  counting = true;
+  double sink = 0.0;
+  for (int k = 0; k < 50; ++k) {
+    Multibody::advance(model, provider, k * 0.05, 0.05, s);
+    sink += Multibody::outputs(model, loads, s).channels[kChannelCount];  // TTDspFA
+  }
+  counting = false;
+  CHECK(allocations == 0);
+  CHECK(std::isfinite(sink));
+}

@@ -11,6 +11,7 @@
 //   s ──(R_x(N θ_g): generator azimuth, LSS-equivalent θ_g, DOF only with a flexible shaft)──▶ generator
 //   h ──(T_hr_i = R_x(2π(i−1)/B) R_y(PreCone), root at HubRad along z_r)──▶ blade-i root frame r_i
 #include <array>
+#include <vector>
 
 #include "fowtsim/core/types.hpp"
 #include "fowtsim/multibody/params.hpp"
@@ -18,7 +19,9 @@
 namespace fowtsim::multibody {
 
 inline constexpr int kMaxBlades = 3;
-inline constexpr int kMaxDofs = 8;  // surge, sway, heave, 3 rotations, rotor azimuth, generator azimuth
+inline constexpr int kMaxTowerModes = 4;  // fore-aft + side-side tower bending modes (2 + 2, ElastoDyn)
+// surge, sway, heave, 3 rotations, rotor azimuth, generator azimuth, then the tower modes
+inline constexpr int kMaxDofs = 8 + kMaxTowerModes;
 
 // Mass properties of one rigid body in its own frame.
 struct RigidBody {
@@ -28,7 +31,36 @@ struct RigidBody {
 };
 
 // Generalised-velocity indices (u = [v_ref; ω_b; ψ̇; θ̇_g]).
-enum Dof : int { kSurge = 0, kSway, kHeave, kRoll, kPitch, kYaw, kRotor, kGenerator };
+// With a flexible tower the tower modes follow at kTower … kTower + tower modes − 1 (fore-aft
+// first), and the generator row stays in place (an identity row with a rigid shaft).
+enum Dof : int { kSurge = 0, kSway, kHeave, kRoll, kPitch, kYaw, kRotor, kGenerator, kTower };
+
+// One lumped mass of the flexible tower (a Gauss point of the station table, weight × m, so that
+// Σ m_k f(x_k) = ∫ m f dx exactly for the polynomial shapes), or the yaw-bearing mass at the top.
+struct TowerStation {
+  double mass_kg = 0.0;                                  // [kg]
+  Vec3 position_b = Vec3::Zero();                        // undeflected point in b, from the reference point [m]
+  std::array<double, kMaxTowerModes> shape{};            // φ_j at the station [-] (along direction_b[j])
+};
+
+// The flexible tower's Rayleigh–Ritz model (flexbody integrals), built by make_model().
+struct FlexibleTower {
+  int mode_count = 0;                                    // 0: rigid tower
+  int fore_aft_count = 0;                                // modes 0 … fore_aft_count−1 bend along x_b, the rest along y_b
+  std::array<Vec3, kMaxTowerModes> direction_b{};        // x_b or y_b
+  std::array<double, kMaxTowerModes> top_shape{};        // φ_j(H) [-] (= 1)
+  std::array<double, kMaxTowerModes> top_slope{};        // φ_j'(H) [1/m]
+  std::vector<TowerStation> stations;                    // distributed tower mass + yaw-bearing mass
+  Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes> stiffness =
+      Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes>::Zero();      // K_q [N/m]
+  Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes> geometric_stiffness_per_g =
+      Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes>::Zero();      // K^T per unit g (top mass + self-weight) [kg/m]
+  Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes> damping =
+      Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes>::Zero();      // ElastoDyn's CTFA/CTSS [N·s/m]
+  Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes> generalized_mass =
+      Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes>::Zero();      // M_q of the tower alone [kg]
+  double top_mass_kg = 0.0;                              // mass above the tower for K^T [kg]
+};
 
 struct Model {
   Params params;                          // the validated input, kept for reference
@@ -46,7 +78,8 @@ struct Model {
   int blade_count = 3;                    // B
   std::array<Mat3, kMaxBlades> blade_root_orientation_h{};  // T_hr_i [-]
   std::array<Vec3, kMaxBlades> blade_root_h{};              // root point i in h, from the apex [m]
-  int dof_count = 7;                      // 7 (rigid drivetrain) or 8 (torsional flexibility)
+  int dof_count = 7;                      // 7 (rigid drivetrain) or 8 (torsional flexibility); 8 + tower modes with a flexible tower
+  FlexibleTower flexible_tower;           // mode_count 0: the rigid tower (merged into base)
   int generator_dof = kRotor;             // index of the DOF that turns the generator
   // DOFs whose acceleration is given instead of solved for (Params::dofs): zero for a held DOF,
   // State::rotor/generator_acceleration_rad_s2 for a prescribed spin. Their rows of M u̇ = f
@@ -58,6 +91,14 @@ struct Model {
 // path) and builds the model. Also rejects a system whose mass matrix is singular at the initial
 // configuration (e.g. all inertias zero, or a flexible drivetrain without generator inertia).
 Model make_model(const Params& params);
+
+// Whether row/column i of M u̇ = f is a DOF of the model (the generator row is not with a rigid
+// shaft, nor are the unused tower rows).
+inline bool dof_active(const Model& model, int i) {
+  if (i < kGenerator) return true;
+  if (i == kGenerator) return model.generator_dof == kGenerator;
+  return i < kTower + model.flexible_tower.mode_count;
+}
 
 // Composite mass properties of the whole structure in b at the initial yaw and azimuth (rigid
 // blades included, flexible ones not): for reports, checks and the driver's hydrostatic balance.

@@ -17,7 +17,8 @@
 
 namespace fowtsim::multibody {
 
-inline constexpr int kChannelCount = 42;
+inline constexpr int kChannelCount = 42;       // channels of the rigid-tower model
+inline constexpr int kTowerChannelCount = 2;   // TTDspFA, TTDspSS, appended with a flexible tower
 
 struct Output {
   GeneralisedVector acceleration = GeneralisedVector::Zero();  // u̇ (model.hpp Dof order) [m/s², rad/s²]
@@ -28,7 +29,7 @@ struct Output {
   Vec6 yaw_bearing_loads = Vec6::Zero();  // [F; M] of nacelle + rotor on the tower top, about it, frame p (= b axes) [N, N·m]
   std::array<FrameMotion, kMaxBlades> blade_root{};  // motion of each blade-root frame r_i (model.hpp)
   FrameMotion hub;                        // rotating hub frame h at the apex
-  std::array<double, kChannelCount> channels{};      // values of channels(), same order and units
+  std::array<double, kChannelCount + kTowerChannelCount> channels{};  // values of channels(), same order and units (the first channels().size())
 };
 
 struct Multibody {

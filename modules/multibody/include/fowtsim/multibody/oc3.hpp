@@ -11,4 +11,8 @@ namespace fowtsim::multibody {
 // Rigid blades, flexible drivetrain, fixed yaw, all initial conditions zero.
 Params oc3_hywind_params();
 
+// Switches on the flexible tower of the OC3-Hywind deck (ElastoDyn_Tower.dat: TwFAStif, TwSSStif,
+// TwFAM1Sh … TwSSM2Sh, TwrFADmp, TwrSSDmp; 2 fore-aft + 2 side-side modes, 1 % damping each).
+void set_oc3_flexible_tower(Params& p);
+
 }  // namespace fowtsim::multibody

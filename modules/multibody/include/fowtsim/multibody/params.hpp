@@ -36,6 +36,15 @@ struct TowerParams {
   std::vector<double> station_fraction;   // HtFract: 0 … 1 along the tower, strictly increasing [-]
   std::vector<double> mass_density_kg_m;  // TMassDen at the stations [kg/m] (≥ 0)
   double mass_density_scale = 1.0;        // AdjTwMa: factor on TMassDen [-] (≥ 0)
+  // Flexible tower (ElastoDyn TwFADOF1/2, TwSSDOF1/2): off by default, the rigid tower above.
+  // The number of modes per direction is the number of shape rows (0 … 2 each).
+  bool flexible = false;
+  std::vector<double> fore_aft_stiffness_N_m2;             // TwFAStif at the stations [N·m²] (> 0)
+  std::vector<double> side_side_stiffness_N_m2;            // TwSSStif at the stations [N·m²] (> 0)
+  std::vector<std::vector<double>> fore_aft_mode_shapes;   // TwFAM{1,2}Sh(2 … 6): 5 coefficients per mode
+  std::vector<std::vector<double>> side_side_mode_shapes;  // TwSSM{1,2}Sh(2 … 6)
+  std::vector<double> fore_aft_damping_percent;            // TwrFADmp per mode [% of critical]
+  std::vector<double> side_side_damping_percent;           // TwrSSDmp per mode [%]
 };
 
 struct NacelleParams {
@@ -84,6 +93,7 @@ struct InitialConditions {
   double azimuth_deg = 0.0;               // Azimuth: blade 1 up at 0, + about the shaft axis (downwind) [deg]
   double rotor_speed_rpm = 0.0;           // RotSpeed [rpm]; negative spins backwards
   double nacelle_yaw_deg = 0.0;           // NacYaw [deg] (fixed yaw, or start of a prescribed one)
+  std::array<double, 2> tower_top_deflection_m{};  // TTDspFA, TTDspSS: put on the 1st FA / SS mode (ElastoDyn); flexible tower only [m]
   double blade_pitch_deg = 0.0;           // BlPitch [deg]: every blade's, held until the controller's first call
                                           // (the rotor aerodynamics and the flexible blades take it; the chain does not)
 };

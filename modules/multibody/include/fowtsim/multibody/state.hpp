@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "fowtsim/core/types.hpp"
+#include "fowtsim/multibody/model.hpp"
 
 namespace fowtsim::multibody {
 
@@ -22,6 +23,9 @@ struct State {
   double nacelle_yaw_rad = 0.0;                     // nacelle yaw about z_b (prescribed or fixed) [rad]
   double nacelle_yaw_rate_rad_s = 0.0;              // [rad/s]
   double nacelle_yaw_acceleration_rad_s2 = 0.0;     // [rad/s²]
+  // Flexible tower: modal coordinates (tower-top deflection of each mode, fore-aft first) [m].
+  std::array<double, kMaxTowerModes> tower_deflection_m{};
+  std::array<double, kMaxTowerModes> tower_deflection_rate_m_s{};  // [m/s]
 };
 
 // Its field list (core/fields.hpp): checkpoints and comparison of states.
@@ -30,7 +34,7 @@ void fields(Archive& a, State& s) {
   a.io(s.position_m, s.orientation, s.velocity_m_s, s.angular_velocity_rad_s, s.rotor_azimuth_rad,
        s.rotor_speed_rad_s, s.generator_azimuth_rad, s.generator_speed_rad_s, s.rotor_acceleration_rad_s2,
        s.generator_acceleration_rad_s2, s.nacelle_yaw_rad, s.nacelle_yaw_rate_rad_s,
-       s.nacelle_yaw_acceleration_rad_s2);
+       s.nacelle_yaw_acceleration_rad_s2, s.tower_deflection_m, s.tower_deflection_rate_m_s);
 }
 
 }  // namespace fowtsim::multibody
