@@ -3,6 +3,7 @@
 // surge 0.0080479, sway 0.0080475, heave 0.0324294, roll 0.0342412, pitch 0.0342602, yaw 0.1210301 Hz).
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 
 #include <hdf5.h>
 
@@ -94,4 +95,11 @@ TEST_CASE("modes with the flexible tower: tower coordinates, tower modes near 0.
   CHECK(first(r, "PtfmHeave").frequency_hz == Approx(first(rigid, "PtfmHeave").frequency_hz).epsilon(0.01));
   CHECK(first(r, "PtfmYaw").frequency_hz == Approx(first(rigid, "PtfmYaw").frequency_hz).epsilon(0.01));
   for (const StructuralMode& m : r.modes) CHECK(m.damping_ratio >= -1e-6);
+}
+
+TEST_CASE("a flexible tower with flexible blades stops at its deck line (not verified together yet)", "[unit][modes]") {
+  const auto dir = testing::scratch_dir("flexible_tower_blades");
+  std::ofstream(dir / "deck.yaml") << "include: [" << (testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml").string()
+                                   << "]\nstructure: {tower: {flexible: true}}\n";
+  CHECK_THROWS_WITH(floating_modes(dir / "deck.yaml"), Catch::Contains("deck.yaml:2") && Catch::Contains("structure.tower.flexible"));
 }

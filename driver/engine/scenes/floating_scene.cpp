@@ -117,6 +117,12 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   if (structure_.rotor.flexible_blades && !deck.has("blades"))
     throw InputError({"floating", std::nullopt, "structure.rotor.flexible_blades", "a blades section"},
                      where(deck, "structure.rotor.flexible_blades") + ": flexible blades need the `blades` section (their structure)");
+  // Not verified together yet (issue 24): the tower's gravity softening counts the rotor mass the
+  // multibody carries, which leaves the flexible blades' mass out.
+  if (structure_.tower.flexible && deck.has("blades"))
+    throw InputError({"floating", std::nullopt, "structure.tower.flexible", "a rigid tower with flexible blades, or rigid blades"},
+                     where(deck, "structure.tower.flexible") +
+                         ": a flexible tower with flexible blades is not supported yet (its softening would leave out the blades' mass)");
   const multibody::State initial = multibody::Multibody::make_state(model_);
   dt_s_ = simulation_keys(deck).dt_s;
   sea_.emplace(deck, platform_motion(initial), dt_s_);
@@ -181,6 +187,9 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   values_.assign(all_.size(), 0.0);
 
   input_warnings_ = sea_->warnings();
+  if (structure_.tower.flexible && rotor_ && rotor_->tower_drag_on())
+    input_warnings_.push_back("aero.tower_drag acts at the tower base: it moves the platform and the tower-base loads, not the "
+                              "flexible tower's bending modes (not yet distributed over the tower)");
   if (rotor_ && rotor_->params().number_of_blades > 0) {
     const wind::WindParams& w = rotor_->wind_params();
     // NREL 5MW cut-out 25 m/s (the controller has no shutdown): a spinning rotor above it.
