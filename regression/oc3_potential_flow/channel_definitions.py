@@ -14,6 +14,8 @@ import sys
 
 import numpy as np
 
+from compare import read_out  # the same reader as the OC3 table (this folder)
+
 T0 = 100.0
 ALIASES = {"FAIRTEN1": "T[1]", "FAIRTEN2": "T[2]", "FAIRTEN3": "T[3]",  # MAP++'s names for ours
            "ANCHTEN1": "T_a[1]", "ANCHTEN2": "T_a[2]", "ANCHTEN3": "T_a[3]"}
@@ -68,19 +70,6 @@ CHECKS = [
      "`fowtsim verify aero`: the channels as written against openfast-runs/aero_steady, 7 points (RtSpeed, "
      "RtVAvgxh 5e-8, RtTSR 4.9e-5, RtAeroCq 0.11 %, RtSkew 8e-15°; B1N2-3 Fx/Fy 0.26 % of the largest node load)"),
 ]
-
-
-def read_out(path):
-    lines = open(path, errors="replace").read().splitlines()
-    start = next(i for i, l in enumerate(lines) if l.split()[:1] == ["Time"])
-    names = [n.strip() for n in lines[start].split("\t")] if "\t" in lines[start] else lines[start].split()
-    rows = []
-    for line in lines[start + 2:]:
-        try:
-            rows.append([float(x) for x in line.split()])
-        except ValueError:
-            pass
-    return names, np.array(rows)
 
 
 def openfast_names(runs_dir):
