@@ -9,6 +9,7 @@
 
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/rotation.hpp"
+#include "fowtsim/multibody/tower_body.hpp"
 
 namespace fowtsim::multibody {
 namespace {
@@ -53,11 +54,8 @@ GeneralisedMatrix assemble_mass(const Model& model, const State& state, const Ch
     m.noalias() += b.mass * b.cm->jacobian.transpose() * b.cm->jacobian;
     m.noalias() += b.rotation->jacobian.transpose() * b.inertia_g * b.rotation->jacobian;
   }
-  // Flexible tower: its lumped stations (point masses) with their elastic Jacobian columns.
-  for (const TowerStation& st : model.flexible_tower.stations) {
-    const PointKinematics p = tower_station(model, state, k, st);
-    m.noalias() += st.mass_kg * p.jacobian.transpose() * p.jacobian;
-  }
+  // Flexible tower: its mass with the elastic Jacobian columns.
+  if (model.flexible_tower.mode_count > 0) add_tower_mass(model, model.flexible_tower.inertia, state, k, m);
   add_added_mass(k, added_mass, m);
   return m;
 }
@@ -113,12 +111,13 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
     f.noalias() -= b.rotation->jacobian.transpose() *
                    (b.inertia_g * b.rotation->bias_angular_acceleration_rad_s2 + w.cross(b.inertia_g * w));
   }
-  // Flexible tower: weight and bias inertia of the stations; elastic (K_q), geometric (K^T from
+  // Flexible tower: weight and velocity-product inertia of its mass; elastic (K_q), geometric (K^T from
   // the weight above, with gravity) and structural damping forces on the modal coordinates.
   const FlexibleTower& tower = model.flexible_tower;
-  for (const TowerStation& st : tower.stations) {
-    const PointKinematics p = tower_station(model, state, k, st);
-    f.noalias() += p.jacobian.transpose() * (st.mass_kg * (gravity - p.bias_acceleration_m_s2));
+  if (tower.mode_count > 0) {
+    const TowerDAlembert bias = tower_dalembert(model, tower.inertia, state, k, GeneralisedVector::Zero(), gravity);
+    f.noalias() += k.reference.jacobian.transpose() * bias.force_N + k.base.jacobian.transpose() * bias.moment_N_m;
+    for (int i = 0; i < tower.mode_count; ++i) f[kTower + i] += bias.modal_N[i];
   }
   for (int i = 0; i < tower.mode_count; ++i) {
     double elastic = 0.0;
@@ -227,12 +226,17 @@ Invariants invariants(const Model& model, const State& state, bool gravity) {
     if (gravity) inv.potential_energy_J += b.mass * model.params.gravity_m_s2 * b.cm->position_m.z();
   }
   const FlexibleTower& tower = model.flexible_tower;
-  for (const TowerStation& st : tower.stations) {
-    const PointKinematics p = tower_station(model, state, k, st);
-    inv.kinetic_energy_J += 0.5 * st.mass_kg * p.velocity_m_s.squaredNorm();
-    inv.linear_momentum_N_s += st.mass_kg * p.velocity_m_s;
-    inv.angular_momentum_N_m_s += p.position_m.cross(st.mass_kg * p.velocity_m_s);
-    if (gravity) inv.potential_energy_J += st.mass_kg * model.params.gravity_m_s2 * p.position_m.z();
+  if (tower.mode_count > 0) {
+    GeneralisedMatrix mass = GeneralisedMatrix::Zero();
+    add_tower_mass(model, tower.inertia, state, k, mass);
+    const GeneralisedVector u = generalised_velocities(model, state);
+    inv.kinetic_energy_J += 0.5 * u.dot(mass * u);
+    const TowerMomentum momentum = tower_momentum(model, tower.inertia, state, k);
+    inv.linear_momentum_N_s += momentum.linear_N_s;
+    inv.angular_momentum_N_m_s += momentum.angular_N_m_s;
+    const Vec3 cm_moment = k.base.orientation * tower_mass_properties(model, tower.inertia, state).first_moment_kg_m;
+    if (gravity)
+      inv.potential_energy_J += model.params.gravity_m_s2 * (tower.inertia.mass_kg * k.reference.position_m.z() + cm_moment.z());
   }
   for (int i = 0; i < tower.mode_count; ++i)
     for (int j = 0; j < tower.mode_count; ++j)

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "fowtsim/core/rotation.hpp"
+#include "fowtsim/multibody/tower_body.hpp"
 
 namespace fowtsim::multibody {
 namespace {
@@ -28,41 +29,7 @@ RotationKinematics child_rotation(const RotationKinematics& parent, const Mat3& 
   return c;
 }
 
-// Adds the elastic displacement Σ q_j φ_j d_j (b) of a point of the base body to its kinematics
-// from point_on(): position, velocity T_gb Σ q̇_j φ_j d_j, Jacobian columns kTower + j and the
-// Coriolis bias 2 ω × v_rel (the relative acceleration's own bias is zero, φ fixed in b).
-void add_elastic(const Model& model, const State& state, const RotationKinematics& base,
-                 const std::array<double, kMaxTowerModes>& shape, PointKinematics& p) {
-  const FlexibleTower& t = model.flexible_tower;
-  Vec3 v_rel = Vec3::Zero();
-  for (int j = 0; j < t.mode_count; ++j) {
-    const Vec3 column = base.orientation * (shape[j] * t.direction_b[j]);
-    p.jacobian.col(kTower + j) += column;
-    v_rel += state.tower_deflection_rate_m_s[j] * column;
-  }
-  p.velocity_m_s += v_rel;
-  p.bias_acceleration_m_s2 += 2.0 * base.angular_velocity_rad_s.cross(v_rel);
-}
-
-// Position in b of a base-body point with elastic displacement.
-Vec3 deflected(const Model& model, const State& state, const Vec3& position_b,
-               const std::array<double, kMaxTowerModes>& shape) {
-  const FlexibleTower& t = model.flexible_tower;
-  Vec3 x = position_b;
-  for (int j = 0; j < t.mode_count; ++j) x += state.tower_deflection_m[j] * shape[j] * t.direction_b[j];
-  return x;
-}
-
 }  // namespace
-
-PointKinematics tower_station(const Model& model, const State& state, const ChainKinematics& chain,
-                              const TowerStation& station) {
-  const Mat3& t_gb = chain.base.orientation;
-  PointKinematics p = point_on(chain.reference, chain.base,
-                               chain.reference.position_m + t_gb * deflected(model, state, station.position_b, station.shape));
-  add_elastic(model, state, chain.base, station.shape, p);
-  return p;
-}
 
 GeneralisedVector generalised_velocities(const Model& model, const State& state) {
   GeneralisedVector u = GeneralisedVector::Zero();
@@ -117,8 +84,7 @@ void chain_kinematics(const Model& model, const State& state, ChainKinematics& o
   } else {
     // Deflected top, and the top frame T_bt = R_x(θ_x) R_y(θ_y) with θ_y = Σ_FA φ'(H) q,
     // θ_x = −Σ_SS φ'(H) q: two successive relative rotations, each linear in q (no θ̈ bias).
-    out.tower_top = point_on(r, b, r.position_m + t_gb * deflected(model, state, model.tower_top_b, tower.top_shape));
-    add_elastic(model, state, b, tower.top_shape, out.tower_top);
+    out.tower_top = tower_point(model, state, out, model.tower_top_b.z() - model.tower_base_b.z());
     double theta_x = 0.0, theta_y = 0.0, rate_x = 0.0, rate_y = 0.0;
     std::array<double, kMaxTowerModes> dx{}, dy{};
     for (int j = 0; j < tower.mode_count; ++j) {

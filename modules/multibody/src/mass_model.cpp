@@ -15,6 +15,7 @@
 #include "fowtsim/flexbody/shape_functions.hpp"
 #include "fowtsim/multibody/dynamics.hpp"
 #include "fowtsim/multibody/model.hpp"
+#include "fowtsim/multibody/tower_body.hpp"
 
 namespace fowtsim::multibody {
 namespace {
@@ -217,8 +218,31 @@ void validate(const Params& p) {
   e.throw_if_any();
 }
 
-// The flexible tower: shapes, integrals (flexbody), lumped stations at Gauss points (exact for
-// the polynomial shapes: m linear × φ_i φ_j of degree 13 ≤ 2·8 − 1) and the yaw-bearing mass.
+// The tower's shape integrals (TowerInertia) from quadrature points along it (x from the tower
+// base) and the yaw-bearing point mass at the top.
+TowerInertia tower_inertia(const Model& m, const FlexibleTower& t, const std::vector<flexbody::QuadraturePoint>& points,
+                           double yaw_bearing_mass_kg) {
+  TowerInertia in;
+  auto add = [&](double mass, double x) {
+    const Vec3 p = m.tower_base_b + Vec3(0.0, 0.0, x);
+    in.mass_kg += mass;
+    in.first_moment_kg_m += mass * p;
+    in.second_moment_kg_m2 += mass * p * p.transpose();
+    for (int j = 0; j < t.mode_count; ++j) {
+      const double phi_j = t.shape[j].value(x);
+      in.shape_mass_kg[j] += mass * phi_j;
+      in.shape_moment_kg_m[j] += mass * phi_j * p;
+      for (int i = 0; i < t.mode_count; ++i) in.shape_product_kg(i, j) += mass * phi_j * t.shape[i].value(x);
+    }
+  };
+  for (const flexbody::QuadraturePoint& q : points) add(q.w * q.m, q.x);
+  add(yaw_bearing_mass_kg, m.tower_top_b.z() - m.tower_base_b.z());
+  return in;
+}
+
+// The flexible tower: shapes, stiffness and softening integrals (flexbody), and its mass integrals
+// on Gauss points (exact for the polynomial shapes: m linear × φ_i φ_j of degree 13 ≤ 2·8 − 1)
+// with the yaw-bearing mass.
 FlexibleTower make_flexible_tower(const Params& p, const Model& m, double top_mass_kg) {
   using namespace fowtsim::flexbody;
   FlexibleTower t;
@@ -262,6 +286,9 @@ FlexibleTower make_flexible_tower(const Params& p, const Model& m, double top_ma
     const bool fore_aft = j < n_fa;
     const ShapeFunction& shape = fore_aft ? fa_shapes[j] : ss_shapes[j - n_fa];
     t.direction_b[j] = fore_aft ? Vec3::UnitX() : Vec3::UnitY();
+    const auto& c = fore_aft ? tp.fore_aft_mode_shapes[j] : tp.side_side_mode_shapes[j - n_fa];
+    const double sum = c[0] + c[1] + c[2] + c[3] + c[4];  // normalised as polynomial_shape does
+    t.shape[j] = {{c[0] / sum, c[1] / sum, c[2] / sum, c[3] / sum, c[4] / sum}, length};
     const ShapeValue top = shape(length);
     t.top_shape[j] = top.u;
     t.top_slope[j] = top.nu;
@@ -276,21 +303,7 @@ FlexibleTower make_flexible_tower(const Params& p, const Model& m, double top_ma
     const double omega = std::sqrt(t.stiffness(l, l) / t.generalized_mass(l, l));
     t.damping.col(l) = zeta * t.stiffness.col(l) * 2.0 / omega;
   }
-  for (const QuadraturePoint& q : points) {
-    TowerStation s;
-    s.mass_kg = q.w * q.m;
-    s.position_b = m.tower_base_b + Vec3(0.0, 0.0, q.x);
-    for (int j = 0; j < t.mode_count; ++j) {
-      const bool fore_aft = j < n_fa;
-      s.shape[j] = (fore_aft ? fa_shapes[j] : ss_shapes[j - n_fa])(q.x).u;
-    }
-    t.stations.push_back(s);
-  }
-  TowerStation yaw_bearing;
-  yaw_bearing.mass_kg = p.nacelle.yaw_bearing_mass_kg;
-  yaw_bearing.position_b = m.tower_top_b;
-  for (int j = 0; j < t.mode_count; ++j) yaw_bearing.shape[j] = t.top_shape[j];
-  t.stations.push_back(yaw_bearing);
+  t.inertia = tower_inertia(m, t, points, p.nacelle.yaw_bearing_mass_kg);
   t.top_mass_kg = top_mass_kg;
   return t;
 }
@@ -444,11 +457,15 @@ MassSummary mass_summary(const Model& model) {
   RigidBody all = in_b(model.base, k.base.orientation, k.base_cm.position_m);
   all = combine(all, in_b(model.nacelle, k.nacelle.orientation, k.nacelle_cm.position_m));
   all = combine(all, in_b(model.rotor, k.rotor.orientation, k.rotor_cm.position_m));
-  for (const TowerStation& st : model.flexible_tower.stations) {
-    Vec3 at = st.position_b;
-    for (int j = 0; j < model.flexible_tower.mode_count; ++j)
-      at += s0.tower_deflection_m[j] * st.shape[j] * model.flexible_tower.direction_b[j];
-    all = combine(all, point_mass(st.mass_kg, at));
+  if (model.flexible_tower.mode_count > 0) {
+    // The tower's inertia about the reference point, moved to its CM for combine().
+    const TowerMassProperties t = tower_mass_properties(model, model.flexible_tower.inertia, s0);
+    RigidBody tower;
+    tower.mass_kg = t.mass_kg;
+    tower.cm_m = t.first_moment_kg_m / t.mass_kg;
+    const Vec3& c = tower.cm_m;
+    tower.inertia_kg_m2 = t.inertia_ref_kg_m2 - t.mass_kg * (c.squaredNorm() * Mat3::Identity() - c * c.transpose());
+    all = combine(all, tower);
   }
   MassSummary s;
   s.mass_kg = all.mass_kg;

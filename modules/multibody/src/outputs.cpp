@@ -6,6 +6,7 @@
 
 #include "fowtsim/core/rotation.hpp"
 #include "fowtsim/multibody/multibody.hpp"
+#include "fowtsim/multibody/tower_body.hpp"
 
 namespace fowtsim::multibody {
 namespace {
@@ -67,8 +68,9 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
   if (flexible.mode_count == 0) {
     add_body(model.tower.mass_kg, model.tower.inertia_kg_m2, k.tower_cm, k.base, udot, gravity, base, tower);
   } else {
-    for (const TowerStation& st : flexible.stations)
-      add_body(st.mass_kg, Mat3::Zero(), tower_station(model, state, k, st), k.base, udot, gravity, base, tower);
+    const TowerDAlembert d = tower_dalembert(model, flexible.inertia, state, k, udot, gravity);
+    tower.head<3>() += d.force_N;
+    tower.tail<3>() += d.moment_N_m + (k.reference.position_m - base).cross(d.force_N);
   }
   tower.head<3>() += loads.tower_force_N;
   tower.tail<3>() += loads.tower_moment_N_m;

@@ -13,6 +13,7 @@
 #include "fowtsim/flexbody/shape_functions.hpp"
 #include "fowtsim/multibody/multibody.hpp"
 #include "fowtsim/multibody/oc3.hpp"
+#include "fowtsim/multibody/tower_body.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::multibody;
@@ -51,6 +52,24 @@ struct ZeroLoads : LoadProvider {
   bool gravity = false;
   void loads(double, const State&, AppliedLoads& out) override { out.gravity = gravity; }
 };
+
+// The tower's mass as points (mass, height above the tower base): the model's own Gauss rule on
+// the station table and the yaw-bearing mass — summed point by point here, an independent check
+// of the shape integrals (tower_body.hpp) that use the same points.
+std::vector<std::pair<double, double>> lumped_tower(const Params& p) {
+  flexbody::BeamStations table;
+  const double length = p.tower.top_height_m - p.tower.base_height_m;
+  for (std::size_t i = 0; i < p.tower.station_fraction.size(); ++i) {
+    table.x.push_back(p.tower.station_fraction[i] * length);
+    table.m.push_back(p.tower.mass_density_scale * p.tower.mass_density_kg_m[i]);
+    table.EI.push_back(1.0);
+  }
+  std::vector<std::pair<double, double>> points;
+  for (const flexbody::QuadraturePoint& q : flexbody::quadrature_points(table, {flexbody::QuadratureRule::Kind::GaussLegendre, 1, 8}))
+    points.emplace_back(q.w * q.m, q.x);
+  points.emplace_back(p.nacelle.yaw_bearing_mass_kg, length);
+  return points;
+}
 
 // Tower coordinates (modal q, q̇) of the model: u̇ = a0 + A q + B q̇ by central differences.
 struct Linear {
@@ -261,12 +280,12 @@ TEST_CASE("tower-base loads of the deflected OC3 tower in static equilibrium equ
     force += mass * g;
     moment += (at - k.tower_base.position_m).cross(mass * g);
   };
-  for (const TowerStation& st : m.flexible_tower.stations) add(st.mass_kg, tower_station(m, s, k, st).position_m);
+  for (const auto& [mass, height] : lumped_tower(p)) add(mass, tower_point(m, s, k, height).position_m);
   add(m.nacelle.mass_kg, k.nacelle_cm.position_m);
   add(m.rotor.mass_kg, k.rotor_cm.position_m);
   WARN("static TTDspFA " << s.tower_deflection_m[0] + s.tower_deflection_m[1] << " m; TwrBsF " << out.tower_base_loads.head<3>().transpose()
        << " vs " << force.transpose() << "; TwrBsM " << out.tower_base_loads.tail<3>().transpose() << " vs " << moment.transpose());
-  // 1e-9 relative: both are sums of the same ~100 terms in double precision.
+  // 1e-9 relative: the same ~100 terms, summed point by point here and as shape integrals there.
   CHECK((out.tower_base_loads.head<3>() - force).norm() < 1e-9 * force.norm());
   CHECK((out.tower_base_loads.tail<3>() - moment).norm() < 1e-9 * moment.norm());
   const std::vector<ChannelInfo> names = Multibody::channels(m);
@@ -290,4 +309,47 @@ TEST_CASE("initial tower-top deflections go to the first mode of each direction"
   const Output out = Multibody::outputs(m, AppliedLoads{}, s);
   CHECK(out.channels[kChannelCount] == Approx(0.25).epsilon(1e-12));       // TTDspFA (φ(H) = 1)
   CHECK(out.channels[kChannelCount + 1] == Approx(-0.1).epsilon(1e-12));   // TTDspSS
+}
+
+TEST_CASE("the tower's shape integrals equal Kane's sums over its mass points", "[unit][multibody][flexible_tower]") {
+  // A moving, rotated, deflected and vibrating state: Σ m J_kᵀ J_k and Σ m J_kᵀ (g − a_bias,k) point
+  // by point (tower_point's Jacobian and bias) against add_tower_mass / tower_dalembert, and the
+  // d'Alembert load at an arbitrary u̇ against Σ m (g − a_k) and its moment.
+  Params p = oc3_hywind_params();
+  set_oc3_flexible_tower(p);
+  const Model m = make_model(p);
+  State s = initial_state(m);
+  s.position_m = {3.0, -2.0, 0.5};
+  s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.1, Vec3(0.3, 0.9, 0.2).normalized()));
+  s.velocity_m_s = {0.7, -0.4, 0.2};
+  s.angular_velocity_rad_s = {0.05, -0.08, 0.03};
+  s.tower_deflection_m = {0.4, -0.05, 0.2, 0.03};
+  s.tower_deflection_rate_m_s = {0.3, 0.1, -0.2, 0.05};
+  ChainKinematics k;
+  chain_kinematics(m, s, k);
+  const Vec3 g(0.0, 0.0, -p.gravity_m_s2);
+  GeneralisedVector udot;
+  udot << 0.1, -0.2, 0.05, 0.01, -0.02, 0.015, 0.0, 0.0, 0.3, -0.1, 0.2, 0.4;
+  GeneralisedMatrix lumped_mass = GeneralisedMatrix::Zero();
+  GeneralisedVector lumped_force = GeneralisedVector::Zero();
+  Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+  for (const auto& [mass, height] : lumped_tower(p)) {
+    const PointKinematics q = tower_point(m, s, k, height);
+    lumped_mass.noalias() += mass * q.jacobian.transpose() * q.jacobian;
+    lumped_force.noalias() += q.jacobian.transpose() * (mass * (g - q.bias_acceleration_m_s2));
+    const Vec3 f = mass * (g - acceleration(q, udot));
+    force += f;
+    moment += (q.position_m - k.reference.position_m).cross(f);
+  }
+  GeneralisedMatrix mass = GeneralisedMatrix::Zero();
+  add_tower_mass(m, m.flexible_tower.inertia, s, k, mass);
+  const TowerDAlembert bias = tower_dalembert(m, m.flexible_tower.inertia, s, k, GeneralisedVector::Zero(), g);
+  GeneralisedVector f = k.reference.jacobian.transpose() * bias.force_N + k.base.jacobian.transpose() * bias.moment_N_m;
+  for (int j = 0; j < 4; ++j) f[kTower + j] += bias.modal_N[j];
+  // 1e-12 relative: ~80 terms summed in two orders (measured ≈ 1e-15).
+  CHECK((mass - lumped_mass).norm() < 1e-12 * lumped_mass.norm());
+  CHECK((f - lumped_force).norm() < 1e-12 * lumped_force.norm());
+  const TowerDAlembert full = tower_dalembert(m, m.flexible_tower.inertia, s, k, udot, g);
+  CHECK((full.force_N - force).norm() < 1e-12 * force.norm());
+  CHECK((full.moment_N_m - moment).norm() < 1e-12 * moment.norm());
 }

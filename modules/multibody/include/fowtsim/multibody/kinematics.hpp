@@ -59,11 +59,6 @@ GeneralisedVector generalised_velocities(const Model& model, const State& state)
 // Positions, velocities, Jacobians and bias accelerations of the whole chain. Allocates nothing.
 void chain_kinematics(const Model& model, const State& state, ChainKinematics& out);
 
-// A lumped station of the flexible tower (model.flexible_tower.stations[i]): a point of the
-// base body b displaced by Σ q_j φ_j along direction_b[j].
-PointKinematics tower_station(const Model& model, const State& state, const ChainKinematics& chain,
-                              const TowerStation& station);
-
 // The point where the tower axis (through the tower base, along z_b) crosses elevation 0 in g —
 // what aerodynamic tower-influence models take as the tower's origin; the platform reference
 // point only when that lies at elevation 0.

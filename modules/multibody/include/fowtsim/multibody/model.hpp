@@ -20,6 +20,7 @@ namespace fowtsim::multibody {
 
 inline constexpr int kMaxBlades = 3;
 inline constexpr int kMaxTowerModes = 4;  // fore-aft + side-side tower bending modes (2 + 2, ElastoDyn)
+static_assert(kMaxTowerModes == 4, "TowerInertia::shape_moment_kg_m zeroes four vectors");
 // surge, sway, heave, 3 rotations, rotor azimuth, generator azimuth, then the tower modes
 inline constexpr int kMaxDofs = 8 + kMaxTowerModes;
 
@@ -35,12 +36,29 @@ struct RigidBody {
 // first), and the generator row stays in place (an identity row with a rigid shaft).
 enum Dof : int { kSurge = 0, kSway, kHeave, kRoll, kPitch, kYaw, kRotor, kGenerator, kTower };
 
-// One lumped mass of the flexible tower (a Gauss point of the station table, weight × m, so that
-// Σ m_k f(x_k) = ∫ m f dx exactly for the polynomial shapes), or the yaw-bearing mass at the top.
-struct TowerStation {
-  double mass_kg = 0.0;                                  // [kg]
-  Vec3 position_b = Vec3::Zero();                        // undeflected point in b, from the reference point [m]
-  std::array<double, kMaxTowerModes> shape{};            // φ_j at the station [-] (along direction_b[j])
+// The mass of (a part of) the flexible tower as shape integrals, so that its inertia costs the same
+// whatever the mass distribution (seed 002 Sec. 2, eq. 2, and App. A: a flexible body's mass matrix
+// from ∫m, ∫m p, ∫m p pᵀ, ∫m φ, ∫m φ p, ∫m φ φ). A point of the tower at p (undeflected, in b
+// from the reference point) moves to ρ = p + Σ_j q_j φ_j d_j, d_j = direction_b[j]; each integral
+// runs over the tower's line mass (and the yaw-bearing point mass at the top) above a height.
+struct TowerInertia {
+  double mass_kg = 0.0;                                   // ∫ m [kg]
+  Vec3 first_moment_kg_m = Vec3::Zero();                  // ∫ m p [kg·m]
+  Mat3 second_moment_kg_m2 = Mat3::Zero();                // ∫ m p pᵀ [kg·m²]
+  std::array<double, kMaxTowerModes> shape_mass_kg{};     // c_j = ∫ m φ_j [kg]
+  // e_j = ∫ m φ_j p [kg·m] (Eigen vectors are not zeroed by {}: one Zero() per mode)
+  std::array<Vec3, kMaxTowerModes> shape_moment_kg_m = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes> shape_product_kg =
+      Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes>::Zero();  // S_ij = ∫ m φ_i φ_j [kg]
+};
+
+// A tower mode's shape as ElastoDyn gives it, φ(h) = Σ_{k=2..6} c_k (h/L)^k (normalised to φ(L) = 1),
+// h the height above the tower base along the undeflected axis.
+struct TowerModeShape {
+  std::array<double, 5> coefficients{};                   // c_2 … c_6 [-]
+  double length_m = 1.0;                                  // L [m]
+  double value(double height_m) const;                    // φ(h) [-]
+  double slope(double height_m) const;                    // φ'(h) [1/m]
 };
 
 // The flexible tower's Rayleigh–Ritz model (flexbody integrals), built by make_model().
@@ -48,9 +66,10 @@ struct FlexibleTower {
   int mode_count = 0;                                    // 0: rigid tower
   int fore_aft_count = 0;                                // modes 0 … fore_aft_count−1 bend along x_b, the rest along y_b
   std::array<Vec3, kMaxTowerModes> direction_b{};        // x_b or y_b
+  std::array<TowerModeShape, kMaxTowerModes> shape{};    // φ_j
   std::array<double, kMaxTowerModes> top_shape{};        // φ_j(H) [-] (= 1)
   std::array<double, kMaxTowerModes> top_slope{};        // φ_j'(H) [1/m]
-  std::vector<TowerStation> stations;                    // distributed tower mass + yaw-bearing mass
+  TowerInertia inertia;                                  // the whole tower + yaw-bearing mass
   Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes> stiffness =
       Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes>::Zero();      // K_q [N/m]
   Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes> geometric_stiffness_per_g =
