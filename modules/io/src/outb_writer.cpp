@@ -1,24 +1,20 @@
 #include "fowtsim/io/outb_writer.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
+#include <sys/types.h>
 
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <map>
 #include <string>
-#include <utility>
 
 #include <fmt/format.h>
 
-#include "fowtsim/core/error.hpp"
+#include "row_file.hpp"
 #include "status_field.hpp"
-#include "whole_writes.hpp"
 
 namespace fowtsim::io {
 namespace {
@@ -77,11 +73,9 @@ std::string outb_name_note(const std::vector<ChannelInfo>& channels) {
 struct OutbWriter::Impl {
   enum class Phase { created, open, finished };
 
-  std::filesystem::path path;
-  std::string path_text;
+  detail::RowFile file;
   FlushPolicy policy;
   Phase phase = Phase::created;
-  int fd = -1;
   std::size_t channel_count = 0;  // declared channels, without Time
   std::vector<double> pending;    // rows not yet in the file, channels only; reserved once, at begin
   std::size_t pending_rows = 0;
@@ -91,31 +85,15 @@ struct OutbWriter::Impl {
   double interval_s = 0.0;        // t₁ − t₀, the grid appended rows are checked against
   double last_time_s = 0.0;       // of the last row appended
   double written_last_time_s = 0.0;  // of the last row in the file
-  off_t durable_bytes = 0;        // header and whole rows in the file
-  off_t status_offset = 0;        // where the status text in the description starts
 
-  Impl(std::filesystem::path p, std::size_t rows_per_flush)
-      : path(std::move(p)), path_text(path.string()), policy(rows_per_flush) {}
-
-  [[noreturn]] void fail(const std::string& message, const std::string& hint = "") const {
-    throw Error(ErrorContext{"io.outb", std::nullopt, path_text, hint}, message);
-  }
-
-  void write_all(const void* data, std::size_t size, off_t offset, const char* what) {
-    if (const int error = detail::write_all_at(fd, static_cast<const char*>(data), size, offset)) {
-      // Never leave part of a row: the file ends at the last whole one.
-      if (offset >= durable_bytes) (void)!::ftruncate(fd, durable_bytes);
-      fail(fmt::format("cannot write {}: {}", what, std::strerror(error)), "check free disk space");
-    }
-  }
+  Impl(const std::filesystem::path& path, std::size_t rows_per_flush)
+      : file("io.outb", path.string()), policy(rows_per_flush) {}
 
   // The rows after the last whole row, then the header's row count and interval, which only ever
   // describe rows already in the file.
   void write_pending() {
     if (pending_rows > 0) {
-      write_all(pending.data(), pending.size() * sizeof(double), durable_bytes,
-                fmt::format("{} rows", pending_rows).c_str());
-      durable_bytes += static_cast<off_t>(pending.size() * sizeof(double));
+      file.append(pending.data(), pending.size() * sizeof(double), fmt::format("{} rows", pending_rows));
       rows_written += pending_rows;
       written_last_time_s = last_time_s;
       pending.clear();
@@ -128,7 +106,7 @@ struct OutbWriter::Impl {
   // NT, TimeOut1 and TimeIncr in place. The interval over the whole span written, (t_last − t₀) /
   // (n − 1), rebuilds every row's time to within rounding.
   void write_row_count() {
-    if (rows_written > static_cast<std::size_t>(INT32_MAX)) fail("more than 2^31 − 1 rows: beyond the .outb format's row count");
+    if (rows_written > static_cast<std::size_t>(INT32_MAX)) file.fail("more than 2^31 − 1 rows: beyond the .outb format's row count");
     // NT (int32) then TimeOut1, TimeIncr (float64), packed as in the header; no allocation per flush.
     const auto rows = static_cast<std::int32_t>(rows_written);
     const double interval = rows_written > 1 ? (written_last_time_s - first_time_s) / static_cast<double>(rows_written - 1) : 0.0;
@@ -136,12 +114,7 @@ struct OutbWriter::Impl {
     std::memcpy(fields.data(), &rows, sizeof rows);
     std::memcpy(fields.data() + sizeof rows, &first_time_s, sizeof(double));
     std::memcpy(fields.data() + sizeof rows + sizeof(double), &interval, sizeof(double));
-    write_all(fields.data(), fields.size(), kRowCountOffset, "the header's row count");
-  }
-
-  void write_status(const std::string& status) {
-    const std::string field = detail::status_field(status);
-    write_all(field.data(), field.size(), status_offset, "the status");
+    file.write_at(fields.data(), fields.size(), kRowCountOffset, "the header's row count");
   }
 
   // A row off the evenly spaced grid would be read back at the wrong time: refused.
@@ -151,43 +124,31 @@ struct OutbWriter::Impl {
     } else if (rows_appended == 1) {
       interval_s = time_s - first_time_s;
       if (!(interval_s > 0.0))
-        fail(fmt::format("row times {:.17g} s then {:.17g} s do not increase: the .outb format keeps evenly spaced rows only",
-                         first_time_s, time_s));
+        file.fail(fmt::format("row times {:.17g} s then {:.17g} s do not increase: the .outb format keeps evenly spaced rows only",
+                              first_time_s, time_s));
     } else {
       const double expected = last_time_s + interval_s;
       if (!(std::abs(time_s - expected) <= kUniformTolerance * interval_s))
-        fail(fmt::format("row {} at t = {:.17g} s is not one interval {:.17g} s after the last one ({:.17g} s): the .outb "
-                         "format keeps evenly spaced rows only (first time and interval)",
-                         rows_appended, time_s, interval_s, last_time_s));
+        file.fail(fmt::format("row {} at t = {:.17g} s is not one interval {:.17g} s after the last one ({:.17g} s): the .outb "
+                              "format keeps evenly spaced rows only (first time and interval)",
+                              rows_appended, time_s, interval_s, last_time_s));
     }
     last_time_s = time_s;
   }
 };
 
 OutbWriter::OutbWriter(std::filesystem::path path, std::size_t rows_per_flush)
-    : impl_(std::make_unique<Impl>(std::move(path), rows_per_flush)) {}
+    : impl_(std::make_unique<Impl>(path, rows_per_flush)) {}
 
 OutbWriter::~OutbWriter() {
-  Impl& w = *impl_;
-  if (w.fd < 0) return;
-  // Reached without finish(): keep every row that can be written and say so; nothing may throw.
-  try {
-    w.write_pending();
-  } catch (...) {
-  }
-  try {
-    w.write_status("incomplete: output closed before the run finished");
-  } catch (...) {
-  }
-  ::close(w.fd);
+  impl_->file.mark_unfinished([this] { impl_->write_pending(); });
 }
 
 void OutbWriter::begin(const std::vector<ChannelInfo>& channels, const RunMetadata& metadata) {
   Impl& w = *impl_;
-  if (w.phase != Impl::Phase::created) w.fail("begin() called twice");
-  if (channels.size() > static_cast<std::size_t>(INT32_MAX)) w.fail("too many channels for the .outb format");
-  w.fd = ::open(w.path_text.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (w.fd < 0) w.fail(fmt::format("cannot create the file: {}", std::strerror(errno)), "check that the folder exists and is writable");
+  if (w.phase != Impl::Phase::created) w.file.fail("begin() called twice");
+  if (channels.size() > static_cast<std::size_t>(INT32_MAX)) w.file.fail("too many channels for the .outb format");
+  w.file.create();
   w.phase = Impl::Phase::open;
   w.channel_count = channels.size();
 
@@ -201,23 +162,22 @@ void OutbWriter::begin(const std::vector<ChannelInfo>& channels, const RunMetada
   put<double>(header, 0.0);        // TimeOut1, TimeIncr: set with the first rows
   put<double>(header, 0.0);
   put<std::int32_t>(header, static_cast<std::int32_t>(description.size()));
-  w.status_offset = static_cast<off_t>(header.size() + lead.size());
+  w.file.set_status_offset(static_cast<off_t>(header.size() + lead.size()));
   header += description;
   header += fixed_text("Time");
   for (const ChannelInfo& c : channels) header += fixed_text(c.name);
   header += fixed_text("(s)");
   for (const ChannelInfo& c : channels) header += fixed_text("(" + c.unit + ")");
-  w.write_all(header.data(), header.size(), 0, "the header");
-  w.durable_bytes = static_cast<off_t>(header.size());
+  w.file.append(header.data(), header.size(), "the header");
   w.pending.reserve(w.channel_count * w.policy.rows_per_block());
   w.policy.flushed();
 }
 
 void OutbWriter::append(double time_s, std::span<const double> values) {
   Impl& w = *impl_;
-  if (w.phase != Impl::Phase::open) w.fail("append() before begin() or after finish()");
+  if (w.phase != Impl::Phase::open) w.file.fail("append() before begin() or after finish()");
   if (values.size() != w.channel_count)
-    w.fail(fmt::format("append() got {} values for {} declared channels", values.size(), w.channel_count));
+    w.file.fail(fmt::format("append() got {} values for {} declared channels", values.size(), w.channel_count));
   w.check_uniform(time_s);
   ++w.rows_appended;
   w.pending.insert(w.pending.end(), values.begin(), values.end());
@@ -230,14 +190,12 @@ void OutbWriter::flush() {
 
 void OutbWriter::finish(const RunEnd& end) {
   Impl& w = *impl_;
-  if (w.phase != Impl::Phase::open) w.fail("finish() before begin() or called twice");
+  if (w.phase != Impl::Phase::open) w.file.fail("finish() before begin() or called twice");
   w.write_pending();
   w.write_row_count();  // again: an earlier rewrite of it may have failed after its rows went in
-  w.write_status(end.status);
+  w.file.write_status(end.status);
   w.phase = Impl::Phase::finished;
-  const int f = w.fd;
-  w.fd = -1;
-  if (::close(f) != 0) w.fail(fmt::format("cannot close the file: {}", std::strerror(errno)), "check free disk space");
+  w.file.close();
 }
 
 }  // namespace fowtsim::io

@@ -1,10 +1,5 @@
 #include "fowtsim/io/text_out_writer.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 #include <iterator>
 #include <string>
 #include <utility>
@@ -12,8 +7,8 @@
 #include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
+#include "row_file.hpp"
 #include "status_field.hpp"
-#include "whole_writes.hpp"
 
 namespace fowtsim::io {
 
@@ -22,49 +17,24 @@ using detail::status_field;
 struct TextOutWriter::Impl {
   enum class Phase { created, open, finished };
 
-  std::filesystem::path path;
-  std::string path_text;
+  detail::RowFile file;
   TextOutOptions options;
   FlushPolicy policy;
   Phase phase = Phase::created;
-  int fd = -1;
   std::size_t channel_count = 0;   // declared channels, without Time
   std::size_t pending_rows = 0;    // rows in `pending`
-  off_t durable_bytes = 0;         // bytes of whole rows (and the header) in the file
-  off_t status_offset = 0;         // where the status text of line 5 starts
   fmt::memory_buffer pending;      // formatted rows not yet in the file; reserved once, at begin
 
-  Impl(std::filesystem::path p, TextOutOptions o)
-      : path(std::move(p)), path_text(path.string()), options(std::move(o)),
-        policy(options.rows_per_flush) {}
+  Impl(const std::filesystem::path& path, TextOutOptions o)
+      : file("io.text", path.string()), options(std::move(o)), policy(options.rows_per_flush) {}
 
-  [[noreturn]] void fail(const std::string& message, const std::string& hint = "") const {
-    throw Error(ErrorContext{"io.text", std::nullopt, path_text, hint}, message);
-  }
-
-  // Writes `pending` after the last whole row. A failed write is cut back to that row (so the file
-  // never ends in a partial one) and the rows stay pending for the next try.
+  // Writes `pending` after the last whole row. A failed write leaves the file at that row and the
+  // rows pending for the next try.
   void write_pending() {
-    if (const int error = detail::write_all_at(fd, pending.data(), pending.size(), durable_bytes)) {
-      (void)!::ftruncate(fd, durable_bytes);
-      fail(fmt::format("cannot write {} rows: {}", pending_rows, std::strerror(error)), "check free disk space");
-    }
-    durable_bytes += static_cast<off_t>(pending.size());
+    file.append(pending.data(), pending.size(), fmt::format("{} rows", pending_rows));
     pending.clear();
     pending_rows = 0;
     policy.flushed();
-  }
-
-  void write_status(const std::string& status) {
-    const std::string field = status_field(status);
-    if (const int error = detail::write_all_at(fd, field.data(), field.size(), status_offset))
-      fail(fmt::format("cannot write the status: {}", std::strerror(error)), "check free disk space");
-  }
-
-  void close_file() {
-    const int f = fd;
-    fd = -1;
-    if (::close(f) != 0) fail(fmt::format("cannot close the file: {}", std::strerror(errno)), "check free disk space");
   }
 
   void append_number(double value) {
@@ -75,7 +45,7 @@ struct TextOutWriter::Impl {
 };
 
 TextOutWriter::TextOutWriter(std::filesystem::path path, TextOutOptions options)
-    : impl_(std::make_unique<Impl>(std::move(path), std::move(options))) {
+    : impl_(std::make_unique<Impl>(path, std::move(options))) {
   const int digits = impl_->options.significant_digits;
   if (digits < 1 || digits > 17) {
     throw InputError(ErrorContext{"io.text", std::nullopt, "significant_digits", "use 1 to 17"},
@@ -84,25 +54,13 @@ TextOutWriter::TextOutWriter(std::filesystem::path path, TextOutOptions options)
 }
 
 TextOutWriter::~TextOutWriter() {
-  Impl& w = *impl_;
-  if (w.fd < 0) return;
-  // Reached without finish(): keep every row that can be written and say so; nothing may throw.
-  try {
-    w.write_pending();
-  } catch (...) {
-  }
-  try {
-    w.write_status("incomplete: output closed before the run finished");
-  } catch (...) {
-  }
-  ::close(w.fd);
+  impl_->file.mark_unfinished([this] { impl_->write_pending(); });
 }
 
 void TextOutWriter::begin(const std::vector<ChannelInfo>& channels, const RunMetadata& metadata) {
   Impl& w = *impl_;
-  if (w.phase != Impl::Phase::created) w.fail("begin() called twice");
-  w.fd = ::open(w.path_text.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (w.fd < 0) w.fail(fmt::format("cannot create the file: {}", std::strerror(errno)), "check that the folder exists and is writable");
+  if (w.phase != Impl::Phase::created) w.file.fail("begin() called twice");
+  w.file.create();
   w.phase = Impl::Phase::open;
   w.channel_count = channels.size();
 
@@ -111,7 +69,7 @@ void TextOutWriter::begin(const std::vector<ChannelInfo>& channels, const RunMet
   fmt::format_to(out, "Deck: {} (hash {})", metadata.deck_path, metadata.deck_hash);
   if (!w.options.description.empty()) fmt::format_to(out, "; {}", w.options.description);
   fmt::format_to(out, "\n\nStatus: ");
-  w.status_offset = static_cast<off_t>(w.pending.size());
+  w.file.set_status_offset(static_cast<off_t>(w.pending.size()));
   fmt::format_to(out, "{}\n\nTime", status_field("running"));
   for (const ChannelInfo& channel : channels) fmt::format_to(out, "\t{}", channel.name);
   fmt::format_to(out, "\n(s)");
@@ -125,10 +83,10 @@ void TextOutWriter::begin(const std::vector<ChannelInfo>& channels, const RunMet
 
 void TextOutWriter::append(double time_s, std::span<const double> values) {
   Impl& w = *impl_;
-  if (w.phase != Impl::Phase::open) w.fail("append() before begin() or after finish()");
+  if (w.phase != Impl::Phase::open) w.file.fail("append() before begin() or after finish()");
   if (values.size() != w.channel_count) {
-    w.fail(fmt::format("append() got {} values for {} declared channels", values.size(),
-                       w.channel_count));
+    w.file.fail(fmt::format("append() got {} values for {} declared channels", values.size(),
+                            w.channel_count));
   }
   w.append_number(time_s);
   for (const double value : values) {
@@ -145,11 +103,11 @@ void TextOutWriter::flush() {
 
 void TextOutWriter::finish(const RunEnd& end) {
   Impl& w = *impl_;
-  if (w.phase != Impl::Phase::open) w.fail("finish() before begin() or called twice");
+  if (w.phase != Impl::Phase::open) w.file.fail("finish() before begin() or called twice");
   w.write_pending();
-  w.write_status(end.status);
+  w.file.write_status(end.status);
   w.phase = Impl::Phase::finished;
-  w.close_file();
+  w.file.close();
 }
 
 }  // namespace fowtsim::io
