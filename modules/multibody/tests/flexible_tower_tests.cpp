@@ -558,3 +558,18 @@ TEST_CASE("the tower's shape integrals equal Kane's sums over its mass points", 
   CHECK((full.force_N - force).norm() < 1e-12 * force.norm());
   CHECK((full.moment_N_m - moment).norm() < 1e-12 * moment.norm());
 }
+
+// Intent: TwrClrnc has ElastoDyn's definition and geometry: at rest, undeflected, azimuth 0 (blade 1
+// up: its distance from the yaw bearing; blades 2 and 3 below it: their distance from the yaw axis)
+// the OpenFAST v5 OC3 run (5MW_OC3Spar_DLL_WTurb_WavesIrr_600s.out, first row, all deflections 0)
+// gives 65.3788376 m and 55.5060730 m (twice).
+TEST_CASE("TwrClrnc at rest equals OpenFAST's first row of the OC3 run", "[verification][multibody]") {
+  const Model m = make_model(oc3_hywind_params());
+  const Output out = Multibody::outputs(m, AppliedLoads{}, initial_state(m));
+  const std::size_t i = channel(m, "TwrClrnc1");
+  WARN("TwrClrnc1–3 " << out.channels[i] << ", " << out.channels[i + 1] << ", " << out.channels[i + 2]);
+  // OpenFAST writes ~9 digits of a single-precision (ReKi) value: 1e-6 relative.
+  CHECK(out.channels[i] == Approx(65.3788376).epsilon(1e-6));
+  CHECK(out.channels[i + 1] == Approx(55.5060730).epsilon(1e-6));
+  CHECK(out.channels[i + 2] == Approx(55.5060730).epsilon(1e-6));
+}
