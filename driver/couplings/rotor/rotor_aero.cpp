@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "fowtsim/io/turbsim_bts.hpp"
+#include "fowtsim/multibody/tower_body.hpp"
 #include "fowtsim/wind/turbulence_generator.hpp"
 
 namespace fowtsim::driver {
@@ -53,18 +54,29 @@ RotorAero::Data RotorAero::make_data() const {
 
 RotorAero::TowerWorkspace RotorAero::make_tower_workspace() const {
   const std::size_t n = params_.tower_drag ? params_.tower.size() : 0;
-  return {std::vector<Vec3>(n), std::vector<Vec3>(n), std::vector<Vec3>(n)};
+  return {std::vector<Vec3>(n), std::vector<Vec3>(n), std::vector<Vec3>(n), std::vector<Vec3>(n)};
 }
 
-aero::TowerDragLoad RotorAero::tower_drag(double t, const multibody::ChainKinematics& chain, TowerWorkspace& w) const {
-  if (!params_.tower_drag) return {};
+void RotorAero::tower_drag(double t, const multibody::Model& model, const multibody::State& state,
+                           const multibody::ChainKinematics& chain, TowerWorkspace& w, multibody::AppliedLoads& out) const {
+  if (!params_.tower_drag) return;
+  // The stations' elevations count from the tower axis's still-water crossing (the aero deck's tower
+  // reference point), as the rigid tower's always did; as heights above the tower base they shift
+  // with heave and tilt. The normal to the flow is taken to the base body's axis (a bent tower's
+  // local tilt, ~1e-2 rad, changes the normal flow by its cosine: ~1e-4).
   const Vec3 axis = chain.base.orientation.col(2);
-  aero::tower_station_positions(params_, multibody::tower_axis_at_sea_level(chain), axis, w.position);
-  const Vec3& r = chain.reference.position_m;
-  for (std::size_t i = 0; i < w.position.size(); ++i)
-    w.velocity[i] = chain.reference.velocity_m_s + chain.base.angular_velocity_rad_s.cross(w.position[i] - r);
+  const double base_elevation = (chain.tower_base.position_m - multibody::tower_axis_at_sea_level(chain)).dot(axis);
+  const std::size_t n = w.position.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const multibody::PointKinematics p =
+        multibody::tower_point(model, state, chain, params_.tower[i].elevation_m - base_elevation);
+    w.position[i] = p.position_m;
+    w.velocity[i] = p.velocity_m_s;
+  }
   wind_->velocities_profile_below(w.position, t, w.inflow);  // the tower's foot lies below the grid
-  return aero::tower_drag(params_, axis, w.position, w.velocity, w.inflow, chain.tower_base.position_m);
+  aero::tower_drag_nodal(params_, axis, w.velocity, w.inflow, w.force);
+  for (std::size_t i = 0; i < n; ++i)
+    out.tower_loads[static_cast<std::size_t>(out.tower_load_count++)] = {params_.tower[i].elevation_m - base_elevation, w.force[i]};
 }
 
 void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad,

@@ -13,6 +13,7 @@
 #include "fowtsim/aero/tower_drag.hpp"
 #include "fowtsim/core/channels.hpp"
 #include "fowtsim/multibody/kinematics.hpp"
+#include "fowtsim/multibody/loads.hpp"
 #include "fowtsim/multibody/model.hpp"
 #include "fowtsim/multibody/params.hpp"
 #include "fowtsim/wind/wind_field.hpp"
@@ -60,16 +61,18 @@ class RotorAero {
 
   // Workspace of tower_drag(), sized by make_tower_workspace(): written before it is read.
   struct TowerWorkspace {
-    std::vector<Vec3> position, velocity, inflow;  // per tower station, g
+    std::vector<Vec3> position, velocity, inflow, force;  // per tower station, g
   };
   TowerWorkspace make_tower_workspace() const;
   bool tower_drag_on() const { return params_.tower_drag; }
-  // Aerodynamic drag on the rigid tower (aero.tower_drag, AeroDyn TwrAero; aero/tower_drag.hpp) at
-  // time t in the chain configuration `chain`: the stations on the tower axis through
-  // tower_axis_at_sea_level, moving with the base body, in the wind of the field (the mean profile
-  // below a turbulence grid); force and moment about the tower-base point, g [N, N·m]
-  // (multibody::AppliedLoads::tower_force_N).
-  aero::TowerDragLoad tower_drag(double t, const multibody::ChainKinematics& chain, TowerWorkspace& w) const;
+  // Aerodynamic drag on the tower (aero.tower_drag, AeroDyn TwrAero; aero/tower_drag.hpp) at time t
+  // for the multibody state `state` (chain: its kinematics): the stations at their elevations along
+  // the tower axis from tower_axis_at_sea_level, placed on the deflected tower and moving with it
+  // (multibody::tower_point: a flexible tower's vibration is damped by the drag), in the wind of the
+  // field (the mean profile below a turbulence grid); appended to out.tower_loads as the consistent
+  // nodal loads at the stations' heights above the tower base.
+  void tower_drag(double t, const multibody::Model& model, const multibody::State& state,
+                  const multibody::ChainKinematics& chain, TowerWorkspace& w, multibody::AppliedLoads& out) const;
 
   // Unsteady airfoil aerodynamics and dynamic inflow (aero.unsteady_airfoil, aero.dynamic_inflow):
   // their states are read by every evaluation and advanced only here. Nothing happens when the

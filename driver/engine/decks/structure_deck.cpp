@@ -73,7 +73,11 @@ const DeckSection<multibody::Params>& structure_section() {
         .key("fore_aft_damping_percent", Schema::sequence(Schema::number().at_least(0.0)).optional().doc("TwrFADmp per mode [%]"),
              &TowerParams::fore_aft_damping_percent)
         .key("side_side_damping_percent", Schema::sequence(Schema::number().at_least(0.0)).optional().doc("TwrSSDmp per mode [%]"),
-             &TowerParams::side_side_damping_percent);
+             &TowerParams::side_side_damping_percent)
+        .key("gauge_heights_m", Schema::sequence(Schema::number().at_least(0.0)).max_items(9).optional()
+                                    .doc("NTwGages/TwrGagNd: tower gauges (TwHt1 … TwHt9 channels) as heights above the tower base "
+                                         "[m], below the top; ElastoDyn's node J of TwrNodes is at (J − 0.5)(TowerHt − TowerBsHt)/TwrNodes"),
+             &TowerParams::gauge_heights_m);
     DeckSection<NacelleParams> nacelle;
     nacelle.key("mass_kg", non_negative("NacMass"), &NacelleParams::mass_kg)
         .key("cm_m", number_vector(3, "NacCMxn, NacCMyn, NacCMzn from the tower top"), &NacelleParams::cm_m)

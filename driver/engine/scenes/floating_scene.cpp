@@ -69,11 +69,7 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
       out.rotor_force_N = aero_data_->force_N;
       out.rotor_moment_N_m = aero_data_->moment_N_m;
     }
-    if (rotor_ && rotor_->tower_drag_on()) {
-      const aero::TowerDragLoad drag = rotor_->tower_drag(t, chain_, tower_);
-      out.tower_force_N += drag.force_N;
-      out.tower_moment_N_m += drag.moment_N_m;
-    }
+    if (rotor_ && rotor_->tower_drag_on()) rotor_->tower_drag(t, model_, s, chain_, tower_, out);
   }
   multibody::SpinMotion rotor_spin(double t) override {
     return blades_ ? blades_->spin(t, *blades_data_) : multibody::SpinMotion{};
@@ -135,6 +131,13 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
       throw InputError({"floating", std::nullopt, "aero.number_of_blades", "structure.rotor.blade_count"},
                        where(deck, "aero.number_of_blades") + fmt::format(": {} blades, the structure has {}", ap.number_of_blades,
                                                                           structure_.rotor.blade_count));
+    // The tower drag's nodal loads go to the multibody in a fixed-capacity array (no allocation per stage).
+    if (ap.tower_drag && ap.tower.size() > static_cast<std::size_t>(multibody::kMaxTowerLoads))
+      throw InputError({"floating", std::nullopt, "aero.tower.nodes", "at most " + std::to_string(multibody::kMaxTowerLoads)},
+                       where(deck, "aero.tower.nodes") +
+                           fmt::format(": {} tower stations with aero.tower_drag; expected at most {} (multibody::kMaxTowerLoads, "
+                                       "the tower point loads the structure takes)",
+                                       ap.tower.size(), multibody::kMaxTowerLoads));
     const double tip = structure_.rotor.hub_radius_m + ap.blade.back().span_m;
     if (std::abs(tip / structure_.rotor.tip_radius_m - 1.0) > 1e-3)
       throw InputError({"floating", std::nullopt, "aero.blade.nodes", "the structure's tip radius"},
@@ -187,9 +190,6 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   values_.assign(all_.size(), 0.0);
 
   input_warnings_ = sea_->warnings();
-  if (structure_.tower.flexible && rotor_ && rotor_->tower_drag_on())
-    input_warnings_.push_back("aero.tower_drag acts at the tower base: it moves the platform and the tower-base loads, not the "
-                              "flexible tower's bending modes (not yet distributed over the tower)");
   if (rotor_ && rotor_->params().number_of_blades > 0) {
     const wind::WindParams& w = rotor_->wind_params();
     // NREL 5MW cut-out 25 m/s (the controller has no shutdown): a spinning rotor above it.

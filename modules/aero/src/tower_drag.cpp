@@ -11,16 +11,26 @@ void tower_station_positions(const Params& params, const Vec3& tower_base_m, con
   for (std::size_t i = 0; i < params.tower.size(); ++i) out[i] = tower_base_m + params.tower[i].elevation_m * tower_axis;
 }
 
+namespace {
+
+// Load per unit length at station i.
+Vec3 drag_per_length(const Params& params, const Vec3& tower_axis, const Vec3& velocity_m_s, const Vec3& inflow_m_s,
+                     std::size_t i) {
+  const Vec3 relative = inflow_m_s - velocity_m_s;
+  const Vec3 normal = relative - relative.dot(tower_axis) * tower_axis;
+  const TowerNodeParams& t = params.tower[i];
+  return 0.5 * params.air_density_kg_m3 * t.drag_coefficient * t.diameter_m * normal.norm() * normal;
+}
+
+}  // namespace
+
 TowerDragLoad tower_drag(const Params& params, const Vec3& tower_axis, std::span<const Vec3> position_m,
                          std::span<const Vec3> velocity_m_s, std::span<const Vec3> inflow_m_s, const Vec3& about_m) {
   TowerDragLoad load;
   const std::size_t n = params.tower.size();
   // Load per unit length at station i, and its moment density about `about_m`.
   auto per_length = [&](std::size_t i, Vec3& f, Vec3& m) {
-    const Vec3 relative = inflow_m_s[i] - velocity_m_s[i];
-    const Vec3 normal = relative - relative.dot(tower_axis) * tower_axis;
-    const TowerNodeParams& t = params.tower[i];
-    f = 0.5 * params.air_density_kg_m3 * t.drag_coefficient * t.diameter_m * normal.norm() * normal;
+    f = drag_per_length(params, tower_axis, velocity_m_s[i], inflow_m_s[i], i);
     m = (position_m[i] - about_m).cross(f);
   };
   Vec3 f0, m0, f1, m1;
@@ -38,6 +48,20 @@ TowerDragLoad tower_drag(const Params& params, const Vec3& tower_axis, std::span
     m0 = m1;
   }
   return load;
+}
+
+void tower_drag_nodal(const Params& params, const Vec3& tower_axis, std::span<const Vec3> velocity_m_s, std::span<const Vec3> inflow_m_s, std::span<Vec3> force_N) {
+  const std::size_t n = params.tower.size();
+  for (std::size_t i = 0; i < n; ++i) force_N[i].setZero();
+  if (n < 2) return;
+  Vec3 f0 = drag_per_length(params, tower_axis, velocity_m_s[0], inflow_m_s[0], 0);
+  for (std::size_t i = 1; i < n; ++i) {
+    const Vec3 f1 = drag_per_length(params, tower_axis, velocity_m_s[i], inflow_m_s[i], i);
+    const double length = params.tower[i].elevation_m - params.tower[i - 1].elevation_m;
+    force_N[i - 1] += length / 6.0 * (2.0 * f0 + f1);
+    force_N[i] += length / 6.0 * (f0 + 2.0 * f1);
+    f0 = f1;
+  }
 }
 
 }  // namespace fowtsim::aero

@@ -79,3 +79,25 @@ TEST_CASE("tower drag takes the relative flow normal to the axis, quadratic in i
   c.velocity.fill(Vec3(0.0, 2.0, 0.0));
   CHECK(c.load(c.base).force_N.y() < 0.0);
 }
+
+// Intent: the consistent nodal loads of a linear element, F_a = h (2 f_a + f_b)/6, F_b = h (f_a + 2 f_b)/6,
+// carry the distributed drag's resultant and its first moment exactly (stations on a straight line):
+// the flexible tower takes them as point loads instead of tower_drag()'s resultant. A sheared,
+// turning wind with moving stations, so that f differs in size and direction from station to station.
+TEST_CASE("tower drag as consistent nodal loads has the exact resultant and first moment", "[unit][aero]") {
+  Case c;
+  c.inflow = {Vec3(8.0, 1.0, 0.2), Vec3(11.0, -2.0, 0.0), Vec3(13.0, 3.5, -0.4)};
+  c.velocity = {Vec3(0.1, 0.0, 0.0), Vec3(0.6, -0.3, 0.1), Vec3(1.2, 0.4, -0.2)};
+  std::array<Vec3, 3> nodal;
+  tower_drag_nodal(c.p, c.axis, c.velocity, c.inflow, nodal);
+  const Vec3 about(-5.0, 3.0, 40.0);
+  const TowerDragLoad exact = c.load(about);
+  Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+  for (std::size_t i = 0; i < nodal.size(); ++i) {
+    force += nodal[i];
+    moment += (c.position[i] - about).cross(nodal[i]);
+  }
+  // Both are sums of a handful of products of size 1e4–1e6: roundings ~1e-16 each; 1e-12 leaves room.
+  CHECK((force - exact.force_N).norm() < 1e-12 * exact.force_N.norm());
+  CHECK((moment - exact.moment_N_m).norm() < 1e-12 * exact.moment_N_m.norm());
+}

@@ -135,9 +135,12 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
   // Platform loads at r.
   f.noalias() += k.reference.jacobian.transpose() * loads.platform_force_N;
   f.noalias() += k.base.jacobian.transpose() * loads.platform_moment_N_m;
-  // Tower loads at the tower base (the tower is part of the base body).
-  f.noalias() += k.tower_base.jacobian.transpose() * loads.tower_force_N;
-  f.noalias() += k.base.jacobian.transpose() * loads.tower_moment_N_m;
+  // Tower point loads where they act: through the deflected point's Jacobian they reach the base
+  // body and, on a flexible tower, the modes (Q_j = F · φ_j(h) T_gb d_j).
+  for (int i = 0; i < loads.tower_load_count; ++i) {
+    const TowerPointLoad& load = loads.tower_loads[i];
+    f.noalias() += tower_point(model, state, k, load.height_m).jacobian.transpose() * load.force_N;
+  }
 
   // Rotor loads: everything reduced to a force at the apex and a moment about it.
   Vec3 rotor_force = loads.rotor_force_N;

@@ -13,6 +13,7 @@
 #include "fowtsim/flexbody/integrals.hpp"
 #include "fowtsim/flexbody/quadrature.hpp"
 #include "fowtsim/flexbody/shape_functions.hpp"
+#include "fowtsim/flexbody/station_segment.hpp"
 #include "fowtsim/multibody/dynamics.hpp"
 #include "fowtsim/multibody/model.hpp"
 #include "fowtsim/multibody/tower_body.hpp"
@@ -107,6 +108,14 @@ void validate(const Params& p) {
   e.require(std::isfinite(p.tower.top_height_m) && p.tower.top_height_m > p.tower.base_height_m,
             "tower.top_height_m", p.tower.top_height_m, "> tower.base_height_m");
   finite_nonneg(p.tower.mass_density_scale, "tower.mass_density_scale");
+  const auto& gauges = p.tower.gauge_heights_m;
+  if (gauges.size() > static_cast<std::size_t>(kMaxTowerGauges))
+    e.add("structure.tower.gauge_heights_m: expected at most " + std::to_string(kMaxTowerGauges) +
+          " gauges (ElastoDyn's NTwGages ≤ 9: TwHt1 … TwHt9), got " + std::to_string(gauges.size()));
+  for (std::size_t i = 0; i < gauges.size(); ++i)
+    e.require(std::isfinite(gauges[i]) && gauges[i] >= 0.0 && gauges[i] < p.tower.top_height_m - p.tower.base_height_m,
+              "tower.gauge_heights_m[" + std::to_string(i) + "]", gauges[i],
+              "a height above the tower base, 0 ≤ h < top_height_m − base_height_m (the yaw bearing's loads are YawBr*)");
   const auto& f = p.tower.station_fraction;
   if (f.size() < 2 || f.size() != p.tower.mass_density_kg_m.size()) {
     e.add("structure.tower.station_fraction / mass_density_kg_m: expected two equally long lists "
@@ -238,6 +247,29 @@ TowerInertia tower_inertia(const Model& m, const FlexibleTower& t, const std::ve
   for (const flexbody::QuadraturePoint& q : points) add(q.w * q.m, q.x);
   add(yaw_bearing_mass_kg, m.tower_top_b.z() - m.tower_base_b.z());
   return in;
+}
+
+// The tower gauges: for each, the shape integrals of the mass above it, from the model's 8-point
+// Gauss rule on the piece [h, L] of the station table (flexbody::segment, whose x starts at h: shifted
+// back to the tower's heights), and the yaw-bearing mass. EI is not used by the mass integrals; the
+// rigid tower's table carries 1 N·m² (quadrature_points requires EI > 0).
+void make_tower_gauges(const Params& p, Model& m) {
+  const TowerParams& tp = p.tower;
+  const double length = tp.top_height_m - tp.base_height_m;
+  flexbody::BeamStations table;
+  for (std::size_t i = 0; i < tp.station_fraction.size(); ++i) {
+    table.x.push_back(tp.station_fraction[i] * length);
+    table.m.push_back(tp.mass_density_scale * tp.mass_density_kg_m[i]);
+    table.EI.push_back(1.0);
+  }
+  const flexbody::QuadratureRule station_rule{flexbody::QuadratureRule::Kind::GaussLegendre, 1, 8};
+  m.tower_gauge_count = static_cast<int>(tp.gauge_heights_m.size());
+  for (int k = 0; k < m.tower_gauge_count; ++k) {
+    const double h = tp.gauge_heights_m[static_cast<std::size_t>(k)];
+    std::vector<flexbody::QuadraturePoint> points = flexbody::quadrature_points(flexbody::segment(table, h, length), station_rule);
+    for (flexbody::QuadraturePoint& q : points) q.x += h;
+    m.tower_gauges[k] = {h, tower_inertia(m, m.flexible_tower, points, p.nacelle.yaw_bearing_mass_kg)};
+  }
 }
 
 // The flexible tower: shapes, stiffness and softening integrals (flexbody), and its mass integrals
@@ -403,6 +435,7 @@ Model make_model(const Params& params) {
     m.base = platform;
     m.dof_count = kTower + m.flexible_tower.mode_count;
   }
+  make_tower_gauges(p, m);
 
   for (int i = 0; i < 6; ++i) m.acceleration_given[i] = !p.dofs.platform_free[i];
   if (p.dofs.rotor != RotorSpin::free) {

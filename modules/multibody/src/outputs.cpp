@@ -1,8 +1,11 @@
 // Outputs: accelerations from the equations of motion, internal loads by inverse dynamics
 // (d'Alembert: the load a sub-chain exerts on its support is Σ (F_ext − m a) and Σ (M_ext −
 // I α − ω × I ω) plus the moments of those forces), and OpenFAST channels.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
+#include <string>
 
 #include "fowtsim/core/rotation.hpp"
 #include "fowtsim/multibody/multibody.hpp"
@@ -60,7 +63,7 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
   yaw.head<3>() += rotor_force;
   yaw.tail<3>() += rotor_moment;
 
-  // Tower base: the tower (+ yaw-bearing mass) with its external load, and the yaw-bearing load
+  // Tower base: the tower (+ yaw-bearing mass) with its external loads, and the yaw-bearing load
   // carried down.
   const Vec3& base = k.tower_base.position_m;
   Vec6 tower = Vec6::Zero();
@@ -72,8 +75,13 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
     tower.head<3>() += d.force_N;
     tower.tail<3>() += d.moment_N_m + (k.reference.position_m - base).cross(d.force_N);
   }
-  tower.head<3>() += loads.tower_force_N;
-  tower.tail<3>() += loads.tower_moment_N_m;
+  std::array<Vec3, kMaxTowerLoads> load_at;  // the tower loads' points on the deflected tower, g
+  for (int i = 0; i < loads.tower_load_count; ++i) {
+    const TowerPointLoad& load = loads.tower_loads[i];
+    load_at[i] = tower_point(model, state, k, load.height_m).position_m;
+    tower.head<3>() += load.force_N;
+    tower.tail<3>() += (load_at[i] - base).cross(load.force_N);
+  }
   tower.head<3>() += yaw.head<3>();
   tower.tail<3>() += yaw.tail<3>() + (top - base).cross(yaw.head<3>());
 
@@ -124,6 +132,42 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
     }
     c[n++] = fa;  // TTDspFA
     c[n++] = ss;  // TTDspSS
+  }
+  // Tower gauges (ElastoDyn's TwHt{k}): the load of the part above on the part below, as at the
+  // tower base: the d'Alembert load of the mass above, the tower loads at or above the gauge and the
+  // yaw-bearing load carried down; moments about the deflected gauge point; in the local tower frame.
+  for (int g = 0; g < model.tower_gauge_count; ++g) {
+    const TowerGauge& gauge = model.tower_gauges[g];
+    const Vec3 at = tower_point(model, state, k, gauge.height_m).position_m;
+    const TowerDAlembert d = tower_dalembert(model, gauge.above, state, k, udot, gravity);
+    Vec3 force = d.force_N + yaw.head<3>();
+    Vec3 moment = d.moment_N_m + (k.reference.position_m - at).cross(d.force_N) + yaw.tail<3>() +
+                  (top - at).cross(yaw.head<3>());
+    for (int i = 0; i < loads.tower_load_count; ++i) {
+      const TowerPointLoad& load = loads.tower_loads[i];
+      if (std::max(load.height_m, 0.0) < gauge.height_m) continue;  // below the gauge (below the base: at it)
+      force += load.force_N;
+      moment += (load_at[i] - at).cross(load.force_N);
+    }
+    const Mat3 t_gt = tower_section_orientation(model, state, t_gb, gauge.height_m);
+    put3(t_gt.transpose() * force, 1e-3);   // TwHt{k}FLxt, FLyt, FLzt (kN)
+    put3(t_gt.transpose() * moment, 1e-3);  // TwHt{k}MLxt, MLyt, MLzt (kN·m)
+    // ElastoDyn's TwHt{k}TDxt/TDyt: the deflection relative to the undeflected tower along x_t, y_t of
+    // the tower base (its a frame), not the tilted local frame.
+    const Vec3 deflection = tower_deflection(model, state, gauge.height_m);
+    c[n++] = deflection.x();
+    c[n++] = deflection.y();
+  }
+  // ElastoDyn's TwrClrnc{b}: from the deflected tower top (yaw bearing) to the blade tip, in the nacelle
+  // frame: the distance from the yaw axis when the tip is below the yaw bearing, else the distance from
+  // the yaw bearing (no tower radius taken off). Rigid blades: the tip on the preconed pitch axis at TipRad.
+  if (!model.params.rotor.flexible_blades) {
+    const double length = model.params.rotor.tip_radius_m - model.params.rotor.hub_radius_m;
+    for (int i = 0; i < model.blade_count; ++i) {
+      const Vec3 tip = k.blade_root[i].position_m + length * k.blade_root_orientation[i].col(2);
+      const Vec3 r = k.nacelle.orientation.transpose() * (tip - top);
+      c[n++] = r.z() > 0.0 ? r.norm() : r.head<2>().norm();  // TwrClrnc{i+1}
+    }
   }
   return out;
 }
@@ -180,6 +224,29 @@ std::vector<ChannelInfo> Multibody::channels(const Model& model) {
     add("TTDspFA", "m", "tower-top fore-aft deflection relative to the undeflected tower, xt");
     add("TTDspSS", "m", "tower-top side-to-side deflection relative to the undeflected tower, yt");
   }
+  static const char* const load_names[] = {"FLxt", "FLyt", "FLzt", "MLxt", "MLyt", "MLzt"};
+  static const char* const load_descriptions[] = {
+      "fore-aft shear force", "side-to-side shear force", "axial force (negative = compression)",
+      "side-to-side (roll) bending moment", "fore-aft (pitch) bending moment", "torsional (yaw) moment"};
+  for (int g = 0; g < model.tower_gauge_count; ++g) {
+    std::ostringstream h;
+    h << model.tower_gauges[g].height_m;
+    for (int i = 0; i < 6; ++i)
+      c.push_back({"TwHt" + std::to_string(g + 1) + load_names[i], i < 3 ? "kN" : "kN-m",
+                   std::string("local tower ") + load_descriptions[i] + " at gauge " + std::to_string(g + 1) + " (" +
+                       h.str() + " m above the tower base; load of the tower above, about the deflected gauge "
+                       "point), local tower frame " + (i % 3 == 0 ? "xt" : i % 3 == 1 ? "yt" : "zt"),
+                   m});
+    c.push_back({"TwHt" + std::to_string(g + 1) + "TDxt", "m",
+                 "local tower fore-aft deflection at gauge " + std::to_string(g + 1) + " relative to the undeflected tower, xt", m});
+    c.push_back({"TwHt" + std::to_string(g + 1) + "TDyt", "m",
+                 "local tower side-to-side deflection at gauge " + std::to_string(g + 1) + " relative to the undeflected tower, yt", m});
+  }
+  if (!model.params.rotor.flexible_blades)
+    for (int i = 1; i <= model.blade_count; ++i)
+      c.push_back({"TwrClrnc" + std::to_string(i), "m",
+                   "blade " + std::to_string(i) + " tip-to-tower clearance estimate (ElastoDyn: from the yaw axis when the "
+                   "tip is below the yaw bearing, else from the yaw bearing; tower radius not taken off)", m});
   return c;
 }
 

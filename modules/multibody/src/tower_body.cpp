@@ -1,5 +1,7 @@
 #include "fowtsim/multibody/tower_body.hpp"
 
+#include <algorithm>
+
 #include "fowtsim/core/rotation.hpp"
 
 namespace fowtsim::multibody {
@@ -126,9 +128,10 @@ PointKinematics tower_point(const Model& model, const State& state, const ChainK
   const FlexibleTower& tower = model.flexible_tower;
   const Mat3& t_gb = chain.base.orientation;
   Vec3 at = model.tower_base_b + Vec3(0.0, 0.0, height_m);
+  const double on_tower = std::clamp(height_m, 0.0, model.tower_top_b.z() - model.tower_base_b.z());
   std::array<double, kMaxTowerModes> phi{};
   for (int j = 0; j < tower.mode_count; ++j) {
-    phi[j] = tower.shape[j].value(height_m);
+    phi[j] = tower.shape[j].value(on_tower);
     at += state.tower_deflection_m[j] * phi[j] * tower.direction_b[j];
   }
   PointKinematics p = point_on(chain.reference, chain.base, chain.reference.position_m + t_gb * at);
@@ -143,6 +146,25 @@ PointKinematics tower_point(const Model& model, const State& state, const ChainK
   p.velocity_m_s += relative;
   p.bias_acceleration_m_s2 += 2.0 * chain.base.angular_velocity_rad_s.cross(relative);
   return p;
+}
+
+Vec3 tower_deflection(const Model& model, const State& state, double height_m) {
+  const FlexibleTower& tower = model.flexible_tower;
+  Vec3 d = Vec3::Zero();
+  for (int j = 0; j < tower.mode_count; ++j) d += state.tower_deflection_m[j] * tower.shape[j].value(height_m) * tower.direction_b[j];
+  return d;
+}
+
+Mat3 tower_section_orientation(const Model& model, const State& state, const Mat3& t_gb, double height_m) {
+  const FlexibleTower& tower = model.flexible_tower;
+  if (tower.mode_count == 0) return t_gb;
+  double theta_x = 0.0, theta_y = 0.0;
+  for (int j = 0; j < tower.mode_count; ++j) {
+    const double turn = tower.shape[j].slope(height_m) * state.tower_deflection_m[j];
+    if (j < tower.fore_aft_count) theta_y += turn;
+    else theta_x -= turn;
+  }
+  return t_gb * rotation_x(theta_x) * rotation_y(theta_y);
 }
 
 double TowerModeShape::value(double height_m) const {

@@ -46,7 +46,12 @@ TEST_CASE("a multibody step and its outputs allocate nothing", "[unit][multibody
 
 TEST_CASE("channels() and the Output channel array agree in size", "[unit][multibody]") {
   const Model model = make_model(oc3_hywind_params());
-  CHECK(Multibody::channels(model).size() == static_cast<std::size_t>(kChannelCount));
+  CHECK(Multibody::channels(model).size() == static_cast<std::size_t>(kChannelCount + 3));  // + TwrClrnc1–3 (rigid blades)
+  Params p = oc3_hywind_params();
+  set_oc3_flexible_tower(p);
+  p.tower.gauge_heights_m = {0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 77.0};
+  CHECK(Multibody::channels(make_model(p)).size() ==
+        static_cast<std::size_t>(kMaxChannelCount));  // every capacity used: 9 gauges, 3 clearances
 }
 
 TEST_CASE("a flexible-tower step and its outputs allocate nothing", "[unit][multibody][flexible_tower]") {
@@ -55,10 +60,13 @@ TEST_CASE("a flexible-tower step and its outputs allocate nothing", "[unit][mult
   p.nacelle.yaw_prescribed = true;
   p.initial_conditions.rotor_speed_rpm = 12.1;
   p.initial_conditions.tower_top_deflection_m = {0.2, -0.05};
+  p.tower.gauge_heights_m = {0.0, 36.86};
   const Model model = make_model(p);
   State s = Multibody::make_state(model);
   SpringProvider provider;
   AppliedLoads loads;
+  loads.tower_loads[0] = {30.0, Vec3(5.0e3, 1.0e3, 0.0)};  // a tower load: its point, the gauges' filter
+  loads.tower_load_count = 1;
   allocations = 0;
   counting = true;
   double sink = 0.0;

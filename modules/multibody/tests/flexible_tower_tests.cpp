@@ -1,16 +1,20 @@
 // Flexible tower (issue 24): tower fore-aft / side-side Rayleigh–Ritz modes as DOFs of the multibody.
 // Checks against flexbody's isolated-tower model and closed forms; every tolerance has its reason.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include <Eigen/Eigenvalues>
 #include <catch2/catch.hpp>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/rotation.hpp"
 #include "fowtsim/flexbody/axial_force.hpp"
 #include "fowtsim/flexbody/integrals.hpp"
 #include "fowtsim/flexbody/quadrature.hpp"
 #include "fowtsim/flexbody/shape_functions.hpp"
+#include "fowtsim/flexbody/station_segment.hpp"
 #include "fowtsim/multibody/multibody.hpp"
 #include "fowtsim/multibody/oc3.hpp"
 #include "fowtsim/multibody/tower_body.hpp"
@@ -71,6 +75,38 @@ std::vector<std::pair<double, double>> lumped_tower(const Params& p) {
   return points;
 }
 
+// The tower's mass above height h as points (mass, height above the tower base): another Gauss rule
+// (3 panels × 5 points per interval, exact for m linear × a degree-6 shape) on the piece [h, L] of
+// the station table, and the yaw-bearing mass.
+std::vector<std::pair<double, double>> lumped_tower_above(const Params& p, double h) {
+  flexbody::BeamStations table;
+  const double length = p.tower.top_height_m - p.tower.base_height_m;
+  for (std::size_t i = 0; i < p.tower.station_fraction.size(); ++i) {
+    table.x.push_back(p.tower.station_fraction[i] * length);
+    table.m.push_back(p.tower.mass_density_scale * p.tower.mass_density_kg_m[i]);
+    table.EI.push_back(1.0);
+  }
+  std::vector<std::pair<double, double>> points;
+  for (const flexbody::QuadraturePoint& q :
+       flexbody::quadrature_points(flexbody::segment(table, h, length), {flexbody::QuadratureRule::Kind::GaussLegendre, 3, 5}))
+    points.emplace_back(q.w * q.m, q.x + h);
+  points.emplace_back(p.nacelle.yaw_bearing_mass_kg, length);
+  return points;
+}
+
+// Index of a channel by name (REQUIREs it).
+std::size_t channel(const Model& m, const std::string& name) {
+  const std::vector<ChannelInfo> c = Multibody::channels(m);
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (c[i].name == name) return i;
+  FAIL("no channel " << name);
+  return 0;
+}
+Vec3 channel3(const Model& m, const Output& out, const std::string& first) {
+  const std::size_t i = channel(m, first);
+  return Vec3(out.channels[i], out.channels[i + 1], out.channels[i + 2]);
+}
+
 // Tower coordinates (modal q, q̇) of the model: u̇ = a0 + A q + B q̇ by central differences.
 struct Linear {
   Eigen::MatrixXd stiffness_part, damping_part;  // A, B
@@ -115,7 +151,7 @@ TEST_CASE("rigid tower by default: no tower DOFs, the rigid channels", "[unit][m
   const Model m = make_model(oc3_hywind_params());
   CHECK(m.flexible_tower.mode_count == 0);
   CHECK(m.dof_count == 8);
-  CHECK(Multibody::channels(m).size() == static_cast<std::size_t>(kChannelCount));
+  CHECK(Multibody::channels(m).size() == static_cast<std::size_t>(kChannelCount + 3));  // + TwrClrnc1–3 (rigid blades)
 }
 
 TEST_CASE("static tower-top deflection under a top force equals F L^3 / 3EI with the exact static shape",
@@ -261,6 +297,9 @@ TEST_CASE("tower-base loads of the deflected OC3 tower in static equilibrium equ
   set_oc3_flexible_tower(p);
   p.dofs.platform_free = {false, false, false, false, false, false};
   p.dofs.rotor = RotorSpin::held;
+  // ElastoDyn's OC3 gauge: TwrGagNd 10 of TwrNodes 20 on 77.6 m, (10 − ½)·77.6/20 = 36.86 m.
+  const double gauge_height = 36.86;
+  p.tower.gauge_heights_m = {gauge_height};
   const Model m = make_model(p);
   AppliedLoads loads;
   State s = initial_state(m);
@@ -289,10 +328,176 @@ TEST_CASE("tower-base loads of the deflected OC3 tower in static equilibrium equ
   CHECK((out.tower_base_loads.head<3>() - force).norm() < 1e-9 * force.norm());
   CHECK((out.tower_base_loads.tail<3>() - moment).norm() < 1e-9 * moment.norm());
   const std::vector<ChannelInfo> names = Multibody::channels(m);
-  REQUIRE(names.size() == static_cast<std::size_t>(kChannelCount + kTowerChannelCount));
+  REQUIRE(names.size() == static_cast<std::size_t>(kChannelCount + kTowerChannelCount + kGaugeChannelCount + 3));
   CHECK(names[kChannelCount].name == "TTDspFA");
   CHECK(out.channels[kChannelCount] == Approx(s.tower_deflection_m[0] + s.tower_deflection_m[1]).epsilon(1e-12));
   CHECK(out.channels[kChannelCount + 1] == Approx(s.tower_deflection_m[2] + s.tower_deflection_m[3]).margin(1e-15));
+
+  // The mid-height gauge: the weight of everything above it and its moment about the deflected gauge
+  // point, point by point (another quadrature of the mass above), against TwHt1FL*/ML* turned back
+  // from the local frame, which is built here from the shapes' slopes at the gauge.
+  const Vec3 at = tower_point(m, s, k, gauge_height).position_m;
+  Vec3 gauge_force = Vec3::Zero(), gauge_moment = Vec3::Zero();
+  auto add_above = [&](double mass, const Vec3& x) {
+    gauge_force += mass * g;
+    gauge_moment += (x - at).cross(mass * g);
+  };
+  for (const auto& [mass, height] : lumped_tower_above(p, gauge_height)) add_above(mass, tower_point(m, s, k, height).position_m);
+  add_above(m.nacelle.mass_kg, k.nacelle_cm.position_m);
+  add_above(m.rotor.mass_kg, k.rotor_cm.position_m);
+  // φ_j(h), φ_j'(h) from the deck's coefficients (normalised to φ(L) = 1), independently of TowerModeShape.
+  const double length = p.tower.top_height_m - p.tower.base_height_m, x = gauge_height / length;
+  const std::vector<std::vector<double>> shapes = {p.tower.fore_aft_mode_shapes[0], p.tower.fore_aft_mode_shapes[1],
+                                                   p.tower.side_side_mode_shapes[0], p.tower.side_side_mode_shapes[1]};
+  double theta_x = 0.0, theta_y = 0.0, fore_aft = 0.0, side_side = 0.0;
+  for (int j = 0; j < 4; ++j) {
+    double sum = 0.0, value = 0.0, slope = 0.0;
+    for (int c = 0; c < 5; ++c) {
+      sum += shapes[j][c];
+      value += shapes[j][c] * std::pow(x, c + 2);
+      slope += (c + 2) * shapes[j][c] * std::pow(x, c + 1) / length;
+    }
+    const double q = s.tower_deflection_m[j];
+    (j < 2 ? fore_aft : side_side) += q * value / sum;
+    (j < 2 ? theta_y : theta_x) += (j < 2 ? 1.0 : -1.0) * q * slope / sum;
+  }
+  const Mat3 t_gt = k.base.orientation * rotation_x(theta_x) * rotation_y(theta_y);
+  const Vec3 force_t = 1e3 * channel3(m, out, "TwHt1FLxt"), moment_t = 1e3 * channel3(m, out, "TwHt1MLxt");
+  WARN("gauge at " << gauge_height << " m: TwHt1FL " << force_t.transpose() << " N, TwHt1ML " << moment_t.transpose()
+       << " N m; rel. error F " << (t_gt * force_t - gauge_force).norm() / gauge_force.norm() << ", M "
+       << (t_gt * moment_t - gauge_moment).norm() / gauge_moment.norm() << "; TwHt1TDxt "
+       << out.channels[channel(m, "TwHt1TDxt")] << " vs " << fore_aft);
+  // 1e-12 relative: ~60 terms by points here, shape integrals there, each rounding ~1e-16 of its term;
+  // the nacelle and rotor terms, equal in both, dominate (measured 3e-20 on F, 2e-35 on M).
+  CHECK((t_gt * force_t - gauge_force).norm() < 1e-12 * gauge_force.norm());
+  CHECK((t_gt * moment_t - gauge_moment).norm() < 1e-12 * gauge_moment.norm());
+  // TD = Σ q_j φ_j(h) per direction: one polynomial each way, 1e-12 relative (roundings of x^6).
+  CHECK(out.channels[channel(m, "TwHt1TDxt")] == Approx(fore_aft).epsilon(1e-12));
+  CHECK(out.channels[channel(m, "TwHt1TDyt")] == Approx(side_side).epsilon(1e-12).margin(1e-15));
+}
+
+// Loads for the gauge and point-load checks: tower loads along the tower (one below the base, as a
+// heaving platform puts the lowest aero station), a rotor load and a blade-root load.
+AppliedLoads tower_test_loads() {
+  AppliedLoads loads;
+  loads.tower_loads[0] = {-0.3, Vec3(2.0e3, 500.0, 40.0)};
+  loads.tower_loads[1] = {12.0, Vec3(6.0e3, -1.0e3, 0.0)};
+  loads.tower_loads[2] = {40.0, Vec3(5.0e3, 2.0e3, -100.0)};
+  loads.tower_loads[3] = {77.6, Vec3(1.5e3, -800.0, 20.0)};
+  loads.tower_load_count = 4;
+  loads.rotor_force_N = Vec3(7.0e5, 3.0e4, -2.0e4);
+  loads.rotor_moment_N_m = Vec3(4.0e6, -6.0e5, 3.0e5);
+  return loads;
+}
+
+// A moving, rotated, deflected, vibrating state.
+State moving_state(const Model& m) {
+  State s = initial_state(m);
+  s.position_m = {3.0, -2.0, 0.5};
+  s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.1, Vec3(0.3, 0.9, 0.2).normalized()));
+  s.velocity_m_s = {0.7, -0.4, 0.2};
+  s.angular_velocity_rad_s = {0.05, -0.08, 0.03};
+  s.rotor_speed_rad_s = 1.2;
+  s.generator_speed_rad_s = 1.2;
+  if (m.flexible_tower.mode_count > 0) {
+    s.tower_deflection_m = {0.4, -0.05, 0.2, 0.03};
+    s.tower_deflection_rate_m_s = {0.3, 0.1, -0.2, 0.05};
+  }
+  return s;
+}
+
+// Intent: a gauge at the tower base is the tower-base load (ElastoDyn's TwHt at the base is TwrBs),
+// computed another way: the mass above as its own shape integrals (flexbody::segment from 0), the
+// tower loads filtered by height; and a gauge carries exactly the tower loads at or above it.
+// Flexible and rigid tower (the rigid tower's gauges are ElastoDyn's with the tower DOFs off).
+TEST_CASE("a tower gauge at the base equals TwrBs*, and a gauge carries the tower loads above it",
+          "[unit][multibody][flexible_tower]") {
+  for (const bool flexible : {true, false}) {
+    Params p = oc3_hywind_params();
+    if (flexible) set_oc3_flexible_tower(p);
+    p.tower.gauge_heights_m = {0.0, 40.0};
+    const Model m = make_model(p);
+    const State s = moving_state(m);
+    const AppliedLoads loads = tower_test_loads();
+    const Output out = Multibody::outputs(m, loads, s);
+    Vec6 gauge;
+    gauge << channel3(m, out, "TwHt1FLxt"), channel3(m, out, "TwHt1MLxt");
+    Vec6 base;
+    base << channel3(m, out, "TwrBsFxt"), channel3(m, out, "TwrBsMxt");
+    WARN((flexible ? "flexible" : "rigid") << " tower: TwHt1 at 0 m vs TwrBs, rel. " << (gauge - base).norm() / base.norm());
+    // Round-off: the same integrals from the same Gauss points (flexible), or the rigid tower's exact
+    // line moments (rigid), summed in another order (measured 3.5e-16 both); 1e-14 relative.
+    CHECK((gauge - base).norm() < 1e-14 * base.norm());
+  }
+  // The load filter: every DOF held (rigid tower, platform and rotor held), so the loads move nothing
+  // and the gauge at 40 m differs by exactly the tower loads at 40 and 77.6 m and their moments about
+  // the gauge point (in frame t = b).
+  Params p = oc3_hywind_params();
+  p.tower.gauge_heights_m = {0.0, 40.0};
+  p.dofs.platform_free = {false, false, false, false, false, false};
+  p.dofs.rotor = RotorSpin::held;
+  const Model m = make_model(p);
+  const State s = moving_state(m);
+  const AppliedLoads with = tower_test_loads();
+  AppliedLoads without = with;
+  without.tower_load_count = 0;
+  const Output a = Multibody::outputs(m, with, s), b = Multibody::outputs(m, without, s);
+  ChainKinematics k;
+  chain_kinematics(m, s, k);
+  const Vec3 at = tower_point(m, s, k, 40.0).position_m;
+  Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+  for (int i : {2, 3}) {
+    force += with.tower_loads[i].force_N;
+    moment += (tower_point(m, s, k, with.tower_loads[i].height_m).position_m - at).cross(with.tower_loads[i].force_N);
+  }
+  const Mat3 t_gb = k.base.orientation;
+  // Differences of loads of ~1e7 N·m for increments of ~1e5: 1e-9 relative to the increment.
+  CHECK((1e3 * (channel3(m, a, "TwHt2FLxt") - channel3(m, b, "TwHt2FLxt")) - t_gb.transpose() * force).norm() < 1e-9 * force.norm());
+  CHECK((1e3 * (channel3(m, a, "TwHt2MLxt") - channel3(m, b, "TwHt2MLxt")) - t_gb.transpose() * moment).norm() <
+        1e-9 * moment.norm());
+}
+
+// Intent: a tower point load does work on the bending modes, Q_j = F · φ_j(h) T_gb d_j (Kane's
+// generalised force by hand), and on the base body as a force at its point; on the rigid tower the
+// point loads give the generalised forces of their resultant and moment at the tower base, as the
+// drag's resultant was applied before it was distributed.
+TEST_CASE("tower point loads: modal generalised forces by hand, and the rigid tower's resultant at the base",
+          "[unit][multibody][flexible_tower]") {
+  for (const bool flexible : {true, false}) {
+    Params p = oc3_hywind_params();
+    if (flexible) set_oc3_flexible_tower(p);
+    const Model m = make_model(p);
+    const State s = moving_state(m);
+    AppliedLoads with = tower_test_loads(), without = with;
+    without.tower_load_count = 0;
+    Evaluation a, b;
+    evaluate(m, s, with, 0.0, a);
+    evaluate(m, s, without, 0.0, b);
+    const GeneralisedVector df = a.force - b.force;
+    const ChainKinematics& k = a.kinematics;
+    const Mat3& t_gb = k.base.orientation;
+    Vec3 force = Vec3::Zero(), moment = Vec3::Zero();  // about the tower base
+    GeneralisedVector expected = GeneralisedVector::Zero();
+    for (int i = 0; i < with.tower_load_count; ++i) {
+      const TowerPointLoad& load = with.tower_loads[i];
+      const double h = std::clamp(load.height_m, 0.0, 77.6);  // the shapes end at the tower's ends
+      Vec3 at = k.reference.position_m + t_gb * (m.tower_base_b + Vec3(0.0, 0.0, load.height_m));
+      for (int j = 0; j < m.flexible_tower.mode_count; ++j) {
+        const Vec3 d = t_gb * m.flexible_tower.direction_b[j];
+        at += s.tower_deflection_m[j] * m.flexible_tower.shape[j].value(h) * d;
+        expected[kTower + j] += load.force_N.dot(m.flexible_tower.shape[j].value(h) * d);
+      }
+      force += load.force_N;
+      moment += (at - k.tower_base.position_m).cross(load.force_N);
+    }
+    // Rows 0–5: the resultant at the tower base through its Jacobians (the pre-distribution form).
+    expected.noalias() += k.tower_base.jacobian.transpose() * force + k.base.jacobian.transpose() * moment;
+    WARN((flexible ? "flexible" : "rigid") << " tower: Δf " << df.transpose() << "; rel. error vs hand "
+         << (df - expected).norm() / expected.norm());
+    // A few products of 1e3–1e6 summed in two orders, and Δf a difference of two force vectors of
+    // ~1e8 (the weights): measured 2.2e-13 (flexible), 2.5e-14 (rigid) relative; 2e-12.
+    CHECK((df - expected).norm() < 2e-12 * expected.norm());
+  }
 }
 
 TEST_CASE("initial tower-top deflections go to the first mode of each direction", "[unit][multibody][flexible_tower]") {
@@ -352,4 +557,19 @@ TEST_CASE("the tower's shape integrals equal Kane's sums over its mass points", 
   const TowerDAlembert full = tower_dalembert(m, m.flexible_tower.inertia, s, k, udot, g);
   CHECK((full.force_N - force).norm() < 1e-12 * force.norm());
   CHECK((full.moment_N_m - moment).norm() < 1e-12 * moment.norm());
+}
+
+// Intent: TwrClrnc has ElastoDyn's definition and geometry: at rest, undeflected, azimuth 0 (blade 1
+// up: its distance from the yaw bearing; blades 2 and 3 below it: their distance from the yaw axis)
+// the OpenFAST v5 OC3 run (5MW_OC3Spar_DLL_WTurb_WavesIrr_600s.out, first row, all deflections 0)
+// gives 65.3788376 m and 55.5060730 m (twice).
+TEST_CASE("TwrClrnc at rest equals OpenFAST's first row of the OC3 run", "[verification][multibody]") {
+  const Model m = make_model(oc3_hywind_params());
+  const Output out = Multibody::outputs(m, AppliedLoads{}, initial_state(m));
+  const std::size_t i = channel(m, "TwrClrnc1");
+  WARN("TwrClrnc1–3 " << out.channels[i] << ", " << out.channels[i + 1] << ", " << out.channels[i + 2]);
+  // OpenFAST writes ~9 digits of a single-precision (ReKi) value: 1e-6 relative.
+  CHECK(out.channels[i] == Approx(65.3788376).epsilon(1e-6));
+  CHECK(out.channels[i + 1] == Approx(55.5060730).epsilon(1e-6));
+  CHECK(out.channels[i + 2] == Approx(55.5060730).epsilon(1e-6));
 }

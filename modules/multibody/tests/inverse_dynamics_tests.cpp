@@ -170,18 +170,24 @@ TEST_CASE("a tower load moves the base body as a platform load and appears in th
   s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.07, Vec3::UnitY()));  // a pitched platform
   s.velocity_m_s = Vec3(0.3, 0.0, -0.1);
   AppliedLoads on_tower, on_platform;
-  on_tower.tower_force_N = Vec3(4.0e4, -3.0e3, 500.0);
-  on_tower.tower_moment_N_m = Vec3(1.0e4, 1.6e6, -2.0e4);
+  on_tower.tower_loads[0] = {10.0, Vec3(3.0e4, -2.0e3, 500.0)};
+  on_tower.tower_loads[1] = {60.0, Vec3(1.0e4, -1.0e3, 0.0)};
+  on_tower.tower_load_count = 2;
   ChainKinematics k;
   chain_kinematics(model, s, k);
-  on_platform.platform_force_N = on_tower.tower_force_N;
-  on_platform.platform_moment_N_m =
-      on_tower.tower_moment_N_m + (k.tower_base.position_m - k.reference.position_m).cross(on_tower.tower_force_N);
+  const Vec3 axis = k.base.orientation.col(2);
+  Vec3 force = Vec3::Zero(), moment = Vec3::Zero();  // about the tower base
+  for (int i = 0; i < on_tower.tower_load_count; ++i) {
+    force += on_tower.tower_loads[i].force_N;
+    moment += (on_tower.tower_loads[i].height_m * axis).cross(on_tower.tower_loads[i].force_N);
+  }
+  on_platform.platform_force_N = force;
+  on_platform.platform_moment_N_m = moment + (k.tower_base.position_m - k.reference.position_m).cross(force);
   const Output a = Multibody::outputs(model, on_tower, s), b = Multibody::outputs(model, on_platform, s);
   CHECK((a.acceleration - b.acceleration).norm() <= 1e-12 * b.acceleration.norm());
   const Mat3 t_gb = s.orientation.toRotationMatrix();
   Vec6 carried;
-  carried << t_gb.transpose() * on_tower.tower_force_N, t_gb.transpose() * on_tower.tower_moment_N_m;
+  carried << t_gb.transpose() * force, t_gb.transpose() * moment;
   // b's tower base feels the platform's acceleration only through inertia; a's also the load itself.
   CHECK((a.tower_base_loads - b.tower_base_loads - carried).norm() <= 1e-9 * carried.norm());
   CHECK((a.yaw_bearing_loads - b.yaw_bearing_loads).norm() <= 1e-9 * carried.norm());

@@ -29,4 +29,12 @@ void tower_station_positions(const Params& params, const Vec3& tower_base_m, con
 TowerDragLoad tower_drag(const Params& params, const Vec3& tower_axis, std::span<const Vec3> position_m,
                          std::span<const Vec3> velocity_m_s, std::span<const Vec3> inflow_m_s, const Vec3& about_m);
 
+// The same drag as consistent nodal loads, one per station into `force_N` (g [N]), for stations
+// moving at `velocity_m_s` in the wind `inflow_m_s` (wherever the caller places them): for f linear
+// between stations a and b, h = z_b − z_a apart, F_a += h (2 f_a + f_b)/6 and F_b += h (f_a + 2 f_b)/6,
+// the loads of a linear finite element. Their sum and, for stations on a straight line, their first
+// moment Σ (x_i − c) × F_i equal tower_drag()'s exact integrals; applied at the stations of a bending
+// tower they also give its modes the work of the distributed drag. Allocates nothing.
+void tower_drag_nodal(const Params& params, const Vec3& tower_axis, std::span<const Vec3> velocity_m_s, std::span<const Vec3> inflow_m_s, std::span<Vec3> force_N);
+
 }  // namespace fowtsim::aero

@@ -14,6 +14,13 @@
 
 namespace fowtsim::multibody {
 
+// A force on the tower at a height above the tower base along its undeflected axis.
+struct TowerPointLoad {
+  double height_m = 0.0;                     // above the tower base [m]
+  Vec3 force_N = Vec3::Zero();               // g [N]
+};
+inline constexpr int kMaxTowerLoads = 64;    // capacity of AppliedLoads::tower_loads (checked at deck time)
+
 // Everything that acts on the structure at one instant. Forces in g [N]; moments in g [N·m].
 struct AppliedLoads {
   Vec3 platform_force_N = Vec3::Zero();      // on the base body (hydro + mooring + …), g [N]
@@ -29,11 +36,13 @@ struct AppliedLoads {
   // moment about the apex, g. With rigid blades the driver sums its blade-node loads here.
   Vec3 rotor_force_N = Vec3::Zero();         // [N]
   Vec3 rotor_moment_N_m = Vec3::Zero();      // about the apex [N·m]
-  // External load on the (rigid) tower, e.g. its aerodynamic drag: force, and moment about the
-  // tower-base point, g. It moves the base body as a platform load would, and the tower-base
-  // channels (TwrBs*) carry it, as everything above the tower base.
-  Vec3 tower_force_N = Vec3::Zero();         // [N]
-  Vec3 tower_moment_N_m = Vec3::Zero();      // about the tower-base point [N·m]
+  // External point loads on the tower (its aerodynamic drag as consistent nodal loads), the first
+  // tower_load_count: each acts at the tower point tower_point() places at its height, so on a
+  // flexible tower it does work on the bending modes and moves with the deflection. A load below the
+  // tower base (h < 0) acts on the base body; TwrBs* carry every load, a gauge those at or above it
+  // (a load below the base counting as at the base).
+  std::array<TowerPointLoad, kMaxTowerLoads> tower_loads{};
+  int tower_load_count = 0;
   bool gravity = true;                       // weight of every body, Params::gravity_m_s2 along −z_g
 };
 

@@ -61,6 +61,15 @@ struct TowerModeShape {
   double slope(double height_m) const;                    // φ'(h) [1/m]
 };
 
+// A tower gauge (ElastoDyn's TwHt{k} outputs): its height and the mass above it (tower line mass
+// from the gauge up and the yaw-bearing mass) as shape integrals, in the tower's coordinates (p from
+// the reference point, φ_j at the tower's own heights), so tower_dalembert() gives its d'Alembert load.
+inline constexpr int kMaxTowerGauges = 9;  // ElastoDyn's NTwGages ≤ 9
+struct TowerGauge {
+  double height_m = 0.0;                  // above the tower base, undeflected axis [m]
+  TowerInertia above;                     // the tower mass above the gauge
+};
+
 // The flexible tower's Rayleigh–Ritz model (flexbody integrals), built by make_model().
 struct FlexibleTower {
   int mode_count = 0;                                    // 0: rigid tower
@@ -99,6 +108,8 @@ struct Model {
   std::array<Vec3, kMaxBlades> blade_root_h{};              // root point i in h, from the apex [m]
   int dof_count = 7;                      // 7 (rigid drivetrain) or 8 (torsional flexibility); 8 + tower modes with a flexible tower
   FlexibleTower flexible_tower;           // mode_count 0: the rigid tower (merged into base)
+  std::array<TowerGauge, kMaxTowerGauges> tower_gauges{};  // the first tower_gauge_count (TowerParams::gauge_heights_m)
+  int tower_gauge_count = 0;
   int generator_dof = kRotor;             // index of the DOF that turns the generator
   // DOFs whose acceleration is given instead of solved for (Params::dofs): zero for a held DOF,
   // State::rotor/generator_acceleration_rad_s2 for a prescribed spin. Their rows of M u̇ = f

@@ -19,6 +19,9 @@ namespace fowtsim::multibody {
 
 inline constexpr int kChannelCount = 42;       // channels of the rigid-tower model
 inline constexpr int kTowerChannelCount = 2;   // TTDspFA, TTDspSS, appended with a flexible tower
+inline constexpr int kGaugeChannelCount = 8;   // TwHt{k}FL{x,y,z}t, ML{x,y,z}t, TD{x,y}t per tower gauge, appended next
+// Then TwrClrnc1 … B with rigid blades (the flexible blades' tips are not the multibody's).
+inline constexpr int kMaxChannelCount = kChannelCount + kTowerChannelCount + kMaxTowerGauges * kGaugeChannelCount + kMaxBlades;
 
 struct Output {
   GeneralisedVector acceleration = GeneralisedVector::Zero();  // u̇ (model.hpp Dof order) [m/s², rad/s²]
@@ -29,7 +32,7 @@ struct Output {
   Vec6 yaw_bearing_loads = Vec6::Zero();  // [F; M] of nacelle + rotor on the tower top, about it, frame p (= b axes) [N, N·m]
   std::array<FrameMotion, kMaxBlades> blade_root{};  // motion of each blade-root frame r_i (model.hpp)
   FrameMotion hub;                        // rotating hub frame h at the apex
-  std::array<double, kChannelCount + kTowerChannelCount> channels{};  // values of channels(), same order and units (the first channels().size())
+  std::array<double, kMaxChannelCount> channels{};  // values of channels(), same order and units (the first channels().size())
 };
 
 struct Multibody {

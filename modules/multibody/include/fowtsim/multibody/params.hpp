@@ -45,6 +45,12 @@ struct TowerParams {
   std::vector<std::vector<double>> side_side_mode_shapes;  // TwSSM{1,2}Sh(2 … 6)
   std::vector<double> fore_aft_damping_percent;            // TwrFADmp per mode [% of critical]
   std::vector<double> side_side_damping_percent;           // TwrSSDmp per mode [%]
+  // Tower gauges (ElastoDyn NTwGages/TwrGagNd): heights above the tower base along the undeflected
+  // axis, 0 ≤ h < top − base, at most 9 (TwHt1 … TwHt9 channels). ElastoDyn's gauge node J of its
+  // TwrNodes equal elements sits at h = (J − ½)(TowerHt − TowerBsHt)/TwrNodes (OC3: J 10 of 20 →
+  // 36.86 m). With the rigid tower the gauges give the rigid tower's loads, as ElastoDyn's do with
+  // its tower DOFs off.
+  std::vector<double> gauge_heights_m;                     // [m]
 };
 
 struct NacelleParams {

@@ -46,7 +46,18 @@ TowerMomentum tower_momentum(const Model& model, const TowerInertia& inertia, co
                              const ChainKinematics& chain);
 
 // A point of the tower at height h above the tower base on the undeflected axis, deflected: its
-// position, velocity, Jacobian and bias acceleration (g).
+// position, velocity, Jacobian and bias acceleration (g). Beyond the tower's ends the axis continues
+// rigidly: below the base (h < 0) the point moves with the base body, above the top with the top's
+// deflection (φ_j taken at the nearer end).
 PointKinematics tower_point(const Model& model, const State& state, const ChainKinematics& chain, double height_m);
+
+// The deflection Σ_j q_j φ_j(h) d_j of the tower axis at height h (0 ≤ h ≤ H) relative to the
+// undeflected tower, b [m].
+Vec3 tower_deflection(const Model& model, const State& state, double height_m);
+
+// The local tower frame at height h (0 ≤ h ≤ H; ElastoDyn's frame t of a tower node): b turned by the
+// local slopes as the top frame is (kinematics.cpp), T_gt = T_gb R_x(θ_x) R_y(θ_y) with
+// θ_y = Σ_FA φ'_j(h) q_j, θ_x = −Σ_SS φ'_j(h) q_j; T_gb itself for the rigid tower (g ← t).
+Mat3 tower_section_orientation(const Model& model, const State& state, const Mat3& t_gb, double height_m);
 
 }  // namespace fowtsim::multibody
