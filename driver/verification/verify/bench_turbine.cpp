@@ -43,7 +43,7 @@ void bench_aero(std::FILE* out) {
 }
 
 void bench_multibody(std::FILE* out) {
-  fmt::print(out, "OC3-Hywind rigid multibody, free (no gravity, no loads), rotor at 12.1 rpm: one large step of RK4\n");
+  fmt::print(out, "OC3-Hywind multibody, free (no gravity, no loads), rotor at 12.1 rpm: one large step of RK4\n");
   const auto rows = multibody::bench_multibody(20000);
   const std::size_t w = name_width(rows, [](const auto& r) { return r.name; });
   fmt::print(out, "{:<{}} {:>7} {:>8} {:>9} {:>10} {:>12} {:>12} {:>12}\n", "case", w, "steps", "ΔT [s]", "substeps", "µs/step",

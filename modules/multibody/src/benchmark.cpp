@@ -22,8 +22,10 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 std::vector<BenchRow> bench_multibody(int steps) {
   std::vector<BenchRow> rows;
+  for (const bool flexible_tower : {false, true})
   for (const double dt : {0.02, 0.05, 0.1}) {
     Params p = oc3_hywind_params();
+    if (flexible_tower) set_oc3_flexible_tower(p);
     p.max_step_s = dt;
     p.drivetrain.torsional_damping_N_m_s_rad = 0.0;
     p.initial_conditions.rotor_speed_rpm = 12.1;
@@ -50,7 +52,8 @@ std::vector<BenchRow> bench_multibody(int steps) {
     (void)sink;
 
     BenchRow row;
-    row.name = "OC3 free, 12.1 rpm, flexible drivetrain";
+    row.name = flexible_tower ? "OC3 free, 12.1 rpm, flexible drivetrain, flexible tower (4 modes)"
+                              : "OC3 free, 12.1 rpm, flexible drivetrain";
     row.steps = steps;
     row.dt_s = dt;
     row.substeps = 1;
