@@ -1,5 +1,5 @@
-// The rows of `fowtsim verify aero|wind|multibody|control` (cli/verify_aero_wind.cpp,
-// cli/verify_multibody_control.cpp: each row with its bound and the reason for it) all pass, and
+// The rows of `fowtsim verify aero|wind|multibody|control|flexbody` (cli/verify_aero_wind.cpp,
+// cli/verify_multibody_control.cpp, cli/verify_flexbody.cpp: each row with its bound and the reason for it) all pass, and
 // none goes missing: the row counts are fixed, with or without the reference data of ../shared.
 #include <algorithm>
 #include <cstdio>
@@ -56,9 +56,15 @@ TEST_CASE("fowtsim verify control: closed-loop pitch, torque schedule, speed fil
   check_case("control", 12, 0);
 }
 
+TEST_CASE("fowtsim verify flexbody: seed 002's Rayleigh–Ritz bodies, Sec. 5.1–5.5 and 6", "[verification][flexbody]") {
+  // Sec. 5.1 (4 closed forms, top-mass modes, 3 buckling rows), welib's beam (3), Table 1 (7 cases ×
+  // δf_2, δf_4 and the RR bound), Sec. 6 (7 printed entries), Sec. 5.3 torsion (5), Kane's spin-up (3).
+  check_case("flexbody", 47, 0);
+}
+
 TEST_CASE("fowtsim verify all includes the module cases", "[unit]") {
   const std::vector<std::string> names = verification_case_names();
-  for (const char* name : {"aero", "wind", "multibody", "control"}) {
+  for (const char* name : {"aero", "wind", "multibody", "control", "flexbody"}) {
     INFO(name);
     CHECK(std::find(names.begin(), names.end(), name) != names.end());
   }

@@ -31,7 +31,8 @@ void bench_waves(std::FILE* out);
 
 std::vector<std::string> verification_case_names() {
   return {"coupling", "beam-rollup", "beam-curved", "beam-timestep", "beam-beamdyn", "beam-frequencies", "sea",
-          "aero",     "wind",        "multibody",   "control",       "free-decay",   "turbine-validation", "turbine-oc3"};
+          "aero",     "wind",        "multibody",   "control",       "flexbody",     "free-decay",   "turbine-validation",
+          "turbine-oc3"};
 }
 
 std::vector<VerificationRow> run_verification_case(const std::string& name, std::FILE* out) {
@@ -46,6 +47,7 @@ std::vector<VerificationRow> run_verification_case(const std::string& name, std:
   if (name == "wind") return verify_wind(out);
   if (name == "multibody") return verify_multibody(out);  // verify_multibody_control.cpp
   if (name == "control") return verify_control(out);
+  if (name == "flexbody") return verify_flexbody(out);  // verify_flexbody.cpp
   if (name == "free-decay") return verify_free_decay(out);
   if (name == "turbine-validation") return verify_turbine_validation(out);
   if (name == "turbine-oc3") return verify_turbine_oc3(out);

@@ -1,5 +1,5 @@
 #pragma once
-// `fowtsim verify aero|wind|multibody|control`: the headline checks of each module's verification
+// `fowtsim verify aero|wind|multibody|control|flexbody`: the headline checks of each module's verification
 // tests (issue 16), computed through the modules' public verification headers
 // (fowtsim/<module>/verification.hpp) that the module tests use too. Each row holds its bound and
 // the reason for it; the rows against OpenFAST or TurbSim files are left out when ../shared is
@@ -20,5 +20,8 @@ std::vector<VerificationRow> verify_wind(std::FILE* out);
 std::vector<VerificationRow> verify_multibody(std::FILE* out);
 // Closed-loop steady pitch against the operating table, torque schedule, speed filter.
 std::vector<VerificationRow> verify_control(std::FILE* out);
+// Seed 002's Rayleigh–Ritz bodies (modules/flexbody): Sec. 5.1 closed forms, top-mass modes and
+// buckling, welib's uniform beam, Table 1, Sec. 6's M_q/K_q, Sec. 5.3 torsion, Sec. 5.2 Kane's spin-up.
+std::vector<VerificationRow> verify_flexbody(std::FILE* out);
 
 }  // namespace fowtsim::driver

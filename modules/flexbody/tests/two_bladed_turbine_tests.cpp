@@ -6,6 +6,7 @@
 // matrix's scale (rounding). Values the seed prints that cannot be reproduced are asserted at what
 // the physics gives and the reason is given beside them (README, "Seed Sec. 6").
 #include "fowtsim/flexbody/two_bladed_turbine.hpp"
+#include "fowtsim/flexbody/verification.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -17,8 +18,7 @@ namespace {
 
 // |value − printed| <= half a unit of the printed value's last digit (`digits` significant digits).
 bool matches_print(double value, double printed, int digits) {
-  const double unit = std::pow(10.0, std::floor(std::log10(std::abs(printed))) - (digits - 1));
-  return std::abs(value - printed) <= 0.5 * unit;
+  return verification::printed_digit_error(value, printed, digits) <= 1.0;
 }
 
 const Eigen::Vector4d kUnit(1.0, 1.0, 1.0, 1.0);
