@@ -1,0 +1,68 @@
+#pragma once
+// Bending moment two ways (seed 004, slide "Bending Moment"):
+//  - elastic: M = EI v'' = EI Φ'' q, where the shapes have curvature;
+//  - inertia relief: the moment of every force on the part of the body above x, in dynamic
+//    equilibrium (d'Alembert), which also works for rigid bodies (Φ'' = 0).
+// Both are templates over the scalar so the same code serves time series (double) and complex
+// amplitudes (std::complex<double>).
+//
+// Inertia relief, derived (the slide's F_i = F_wave − m v̈ − T_eff v'' + T_eff' v' has a garbled
+// sign: the tension's transverse load per length is +(T_eff v')' = T v'' + T' v'). The beam obeys
+// (EI v'')'' = p + (T v')' with p = f_wave − m v̈ (− α m v̇ for mass-proportional damping).
+// Integrating twice from the top end, where the natural conditions are M(L) = −k_θ v'(L) and
+// M'(L) = T(L) v'(L) − F_top (F_top = −k v(L), plus the support reaction R of a pinned top):
+//   M(x) = ∫_x^L (s − x) p(s) ds − ∫_x^L T v' ds + (L − x) F_top − k_θ v'(L).
+// Integrated by parts, −∫T v' is the moment of the weight and buoyancy (T' per length) and of the
+// top tension about the deflected point: the P–Δ effect. The slide's Σ x_i F_i is the first
+// integral; the seed's T v'' form is the second one before the integration by parts. Strips
+// above x count whole (arm x_i − x, the midpoint rule); the strip holding x counts its upper half
+// (arm Δx/4). A pinned top's R follows from M(0) = 0. Structural damping βK is internal: the
+// inertia-relief moment then includes its viscous part βEI v̇'', the elastic moment does not.
+#include "fowtsim/slender/model.hpp"
+
+#include <complex>
+
+namespace fowtsim::slender {
+
+template <class Scalar>
+using ColumnOf = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+
+// EI v'' at the strip midpoints (N) for generalised displacements q (n).
+template <class Scalar>
+ColumnOf<Scalar> elastic_moment(const Model& model, const ColumnOf<Scalar>& q) {
+  return model.strips.bending_stiffness_N_m2.template cast<Scalar>().cwiseProduct(
+      model.phi_curvature.template cast<Scalar>() * q);
+}
+
+// Inertia-relief moment at the strip midpoints (N), from the load per length p (N) [N/m]
+// (wave force − inertia − external damping) and the generalised displacements q (n).
+template <class Scalar>
+ColumnOf<Scalar> inertia_relief_moment(const Model& model, const ColumnOf<Scalar>& load_N_m, const ColumnOf<Scalar>& q) {
+  const StripTable& s = model.strips;
+  const auto N = s.x_m.size();
+  const ColumnOf<Scalar> slope = model.phi_slope.template cast<Scalar>() * q;
+  const Scalar v_top = model.phi_top.template cast<Scalar>().dot(q);
+  const Scalar slope_top = model.phi_top_slope.template cast<Scalar>().dot(q);
+  const EndSprings& springs = model.body.top_springs;
+  const Scalar top_moment = -springs.rotational_N_m_rad * slope_top;
+  Scalar top_force = -springs.translational_N_m * v_top;
+  // Σ over whole strips above x_j, by suffix sums: Σ x_i p_i Δx, Σ p_i Δx and Σ T_i v'_i Δx.
+  ColumnOf<Scalar> moment(N);
+  Scalar first_moment = Scalar(0), resultant = Scalar(0), tension_term = Scalar(0);
+  for (Eigen::Index j = N - 1; j >= 0; --j) {
+    const double dx = s.dx_m(j), x = s.x_m(j);
+    moment(j) = first_moment - x * resultant - tension_term + load_N_m(j) * (dx * dx / 8.0) -
+                s.effective_tension_N(j) * slope(j) * (dx / 2.0);
+    first_moment += x * load_N_m(j) * dx;
+    resultant += load_N_m(j) * dx;
+    tension_term += s.effective_tension_N(j) * slope(j) * dx;
+  }
+  if (model.body.top_support == Support::Pinned) {
+    // M(0) = first_moment − tension_term + L (F_top + R) + top_moment = 0.
+    top_force = -(first_moment - tension_term + top_moment) / model.length_m;
+  }
+  for (Eigen::Index j = 0; j < N; ++j) moment(j) += (model.length_m - s.x_m(j)) * top_force + top_moment;
+  return moment;
+}
+
+}  // namespace fowtsim::slender

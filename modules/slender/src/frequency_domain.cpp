@@ -1,0 +1,141 @@
+#include "fowtsim/slender/frequency_domain.hpp"
+
+#include "fowtsim/core/error.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <string>
+
+namespace fowtsim::slender {
+namespace {
+
+using std::numbers::pi;
+using namespace std::complex_literals;
+
+void check_converged(const FrequencyDomainOptions& options, double change) {
+  if (change > options.tolerance)
+    throw NumericalError({"slender.frequency_domain", std::nullopt, "drag linearisation γ",
+                          "raise max_iterations or check the drag coefficients"},
+                         "γ did not converge in " + std::to_string(options.max_iterations) + " iterations (relative change " +
+                             std::to_string(change) + ")");
+}
+
+// Relative change of γ between iterations, against the largest γ (0 when there is no drag).
+double relative_change(const VecX& next, const VecX& previous) {
+  const double scale = next.cwiseAbs().maxCoeff();
+  return scale > 0.0 ? (next - previous).cwiseAbs().maxCoeff() / scale : 0.0;
+}
+
+}  // namespace
+
+VecXc solve_generalised(const Model& model, const Modes& modes, double omega, const VecXc& force,
+                        const VecX& drag_damping, Recovery recovery) {
+  const VecX& dx = model.strips.dx_m;
+  const MatX damping = model.structural_damping +
+                       model.phi.transpose() * drag_damping.cwiseProduct(dx).asDiagonal() * model.phi;
+  const VecXc Q = model.phi.transpose() * force.cwiseProduct(dx);
+  const MatX& Psi = modes.shapes;
+  const auto z = Psi.cols();
+  MatXc dynamic = (1i * omega) * (Psi.transpose() * damping * Psi).cast<std::complex<double>>();
+  dynamic.diagonal().array() += (modes.omega_rad_s.array().square() - omega * omega).cast<std::complex<double>>();
+  const VecXc a = dynamic.partialPivLu().solve(Psi.transpose() * Q);
+  if (recovery == Recovery::ModeDisplacement || z == model.mass.rows()) return Psi * a;
+  const Eigen::LLT<MatX> stiffness(model.stiffness);
+  if (stiffness.info() != Eigen::Success)
+    throw InputError({"slender.frequency_domain", std::nullopt, "K", "add end springs or keep every mode"},
+                     "mode acceleration needs K positive definite");
+  const VecXc Psi_a = Psi * a;
+  const VecXc rhs = Q + omega * omega * (model.mass * Psi_a) - 1i * omega * (damping * Psi_a);
+  return stiffness.solve(rhs.real()) + 1i * stiffness.solve(rhs.imag());
+}
+
+HarmonicResponse solve_harmonic(const Model& model, const Modes& modes, double omega, double amplitude,
+                                const VecXc& U, const FrequencyDomainOptions& options) {
+  const StripTable& s = model.strips;
+  const double harmonic_factor = 8.0 / (3.0 * pi);
+  const VecXc flow = amplitude * U;  // u per strip
+  VecX gamma = harmonic_factor * flow.cwiseAbs();  // first guess: the body at rest
+  HarmonicResponse r{omega, amplitude, {}, {}, {}, {}, 0};
+  double change = 1.0;
+  for (r.iterations = 1; r.iterations <= options.max_iterations && change > options.tolerance; ++r.iterations) {
+    r.drag_damping_N_s_m2 = s.drag_factor_kg_m2.cwiseProduct(gamma);
+    // Wave force on strip i: inertia ρCmA u̇ (slide "Wave Force - Morison's Equation") plus the drag
+    // on the flow velocity; the −c v̇ part sits in the damping matrix.
+    r.excitation_N_m = (1i * omega) * s.inertia_coefficient_kg_m.cast<std::complex<double>>().cwiseProduct(flow) +
+                       r.drag_damping_N_s_m2.cast<std::complex<double>>().cwiseProduct(flow);
+    r.q = solve_generalised(model, modes, omega, r.excitation_N_m, r.drag_damping_N_s_m2, options.recovery);
+    r.relative_velocity_m_s = flow - (1i * omega) * (model.phi * r.q);
+    const VecX next = harmonic_factor * r.relative_velocity_m_s.cwiseAbs();
+    change = relative_change(next, gamma);
+    gamma = next;
+  }
+  --r.iterations;
+  check_converged(options, change);
+  return r;
+}
+
+VecXc harmonic_load_per_length(const Model& model, const HarmonicResponse& r) {
+  const StripTable& s = model.strips;
+  const double w = r.omega_rad_s;
+  const VecXc v = model.phi * r.q;
+  const VecXc flow = r.relative_velocity_m_s + (1i * w) * v;  // aU
+  const std::complex<double> inertia_factor = w * w - 1i * w * model.body.rayleigh_mass_per_s;
+  return (1i * w) * s.inertia_coefficient_kg_m.cast<std::complex<double>>().cwiseProduct(flow) +
+         r.drag_damping_N_s_m2.cast<std::complex<double>>().cwiseProduct(r.relative_velocity_m_s) +
+         inertia_factor * s.mass_kg_m.cast<std::complex<double>>().cwiseProduct(v);
+}
+
+RandomResponse solve_random(const Model& model, const Modes& modes, const VecX& omegas, const VecX& spectrum,
+                            double delta_omega, const MatXc& U, const FrequencyDomainOptions& options) {
+  const StripTable& s = model.strips;
+  const auto N = s.x_m.size(), Nf = omegas.size();
+  if (spectrum.size() != Nf || U.cols() != Nf || U.rows() != N)
+    throw InputError({"slender.frequency_domain", std::nullopt, "spectrum, velocity table",
+                      "give S(ω_j) and U(x_i, ω_j) on the same frequencies"},
+                     "sizes differ: " + std::to_string(Nf) + " frequencies, " + std::to_string(spectrum.size()) +
+                         " spectral values, table " + std::to_string(U.rows()) + " × " + std::to_string(U.cols()));
+  const double random_factor = std::sqrt(8.0 / pi);
+  const auto sigma_of = [&](const MatXc& transfer) {  // σ per row of a per-unit-amplitude transfer table
+    return VecX((transfer.cwiseAbs2() * (spectrum * delta_omega)).cwiseSqrt());
+  };
+  RandomResponse r{omegas, delta_omega, spectrum, MatXc(model.mass.rows(), Nf), MatXc(N, Nf), sigma_of(U), {}, 0};
+  VecX gamma = random_factor * r.sigma_relative_velocity_m_s;
+  double change = 1.0;
+  for (r.iterations = 1; r.iterations <= options.max_iterations && change > options.tolerance; ++r.iterations) {
+    r.drag_damping_N_s_m2 = s.drag_factor_kg_m2.cwiseProduct(gamma);
+    for (Eigen::Index j = 0; j < Nf; ++j) {
+      const double w = omegas(j);
+      const VecXc force = (1i * w) * s.inertia_coefficient_kg_m.cast<std::complex<double>>().cwiseProduct(U.col(j)) +
+                          r.drag_damping_N_s_m2.cast<std::complex<double>>().cwiseProduct(U.col(j));
+      r.q_transfer.col(j) = solve_generalised(model, modes, w, force, r.drag_damping_N_s_m2, options.recovery);
+      r.relative_velocity_transfer.col(j) = U.col(j) - (1i * w) * (model.phi * r.q_transfer.col(j));
+    }
+    r.sigma_relative_velocity_m_s = sigma_of(r.relative_velocity_transfer);
+    const VecX next = random_factor * r.sigma_relative_velocity_m_s;
+    change = relative_change(next, gamma);
+    gamma = next;
+  }
+  --r.iterations;
+  check_converged(options, change);
+  return r;
+}
+
+MatX displacement_spectrum(const Model& model, const RandomResponse& r) {
+  return (model.phi * r.q_transfer).cwiseAbs2() * r.wave_spectrum_m2_s.asDiagonal();
+}
+
+RmsProfiles rms_profiles(const Model& model, const RandomResponse& r) {
+  const VecX weight = r.wave_spectrum_m2_s * r.delta_omega_rad_s;
+  const MatXc moment = model.strips.bending_stiffness_N_m2.asDiagonal() * (model.phi_curvature * r.q_transfer);
+  RmsProfiles p;
+  p.displacement_m = ((model.phi * r.q_transfer).cwiseAbs2() * weight).cwiseSqrt();
+  p.bending_moment_N_m = (moment.cwiseAbs2() * weight).cwiseSqrt();
+  p.stress_Pa = p.bending_moment_N_m.cwiseQuotient(model.strips.section_modulus_m3);
+  return p;
+}
+
+}  // namespace fowtsim::slender
