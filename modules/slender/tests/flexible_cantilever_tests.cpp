@@ -90,7 +90,7 @@ TEST_CASE("mode acceleration with 2 modes is closer to the all-mode answer than 
 TEST_CASE("bending moment by EI v'' against inertia relief, FD with linearised drag", "[verification]") {
   const double omega = 2 * pi / 6.0, amplitude = 2.0;
   double previous = 1.0;
-  for (const auto [shapes, strips] : {std::pair{4, 100}, std::pair{8, 400}, std::pair{16, 1600}}) {
+  for (const auto& [shapes, strips] : {std::pair{4, 100}, std::pair{8, 400}, std::pair{16, 1600}}) {
     const Model model = cantilever(shapes, 1.0, 0.0, strips);
     const HarmonicResponse r = solve_harmonic(model, compute_modes(model), omega, amplitude, velocity_transfer(model, omega));
     const VecXc elastic = elastic_moment<std::complex<double>>(model, r.q);
