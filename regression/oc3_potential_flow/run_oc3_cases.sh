@@ -15,15 +15,7 @@ set -euo pipefail
 fowtsim=$1
 out=$2
 here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-runs=$(cd "$root/.." && pwd)/shared/reference/openfast-runs/oc3_spar_wturb_wavesirr/glue-codes/openfast
-reference=$runs/5MW_OC3Spar_DLL_WTurb_WavesIrr/5MW_OC3Spar_DLL_WTurb_WavesIrr_600s.out
-if [ ! -f "$reference" ]; then
-  echo "SKIPPED: no OpenFAST OC3 600-s run at $reference"
-  exit 4  # CTest SKIP_RETURN_CODE, as the C++ tests
-fi
-mkdir -p "$out"
-inputs=$root/inputs
+source "$here/../oc3_openfast_run.sh"
 write_deck() {  # name hydro-file extra-yaml [aero-file]
   cat > "$out/$1.yaml" <<DECK
 include: [$inputs/oc3_hywind/structure.yaml, $inputs/oc3_hywind/$2, $inputs/oc3_hywind/mooring.yaml,

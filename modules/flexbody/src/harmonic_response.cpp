@@ -1,6 +1,7 @@
 #include "fowtsim/flexbody/harmonic_response.hpp"
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/flexbody/sampled_response.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -23,30 +24,12 @@ std::vector<double> harmonic_response(const Eigen::MatrixXd& M, const Eigen::Mat
     throw InputError({"flexbody", std::nullopt, "harmonic response", "square n×n M, D, K; n-vectors; times > 0"},
                      "bad harmonic-response inputs");
   const Eigen::LLT<Eigen::MatrixXd> llt(M);
-  const auto rate = [&](double t, const Eigen::VectorXd& y) {
-    Eigen::VectorXd out(2 * n);
-    out.head(n) = y.tail(n);
-    out.tail(n) = llt.solve(f * std::sin(Omega * t) - D * y.tail(n) - K * y.head(n));
-    return out;
-  };
-  const long samples = std::lround(end_s / sample_s);
-  const long substeps = std::max(1L, static_cast<long>(std::ceil(sample_s / max_step_s - 1e-9)));
-  const double dt = sample_s / static_cast<double>(substeps);
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(2 * n);
-  std::vector<double> out{0.0};
-  out.reserve(static_cast<std::size_t>(samples) + 1);
-  for (long k = 0; k < samples; ++k) {
-    for (long s = 0; s < substeps; ++s) {
-      const double t = static_cast<double>(k) * sample_s + static_cast<double>(s) * dt;
-      const Eigen::VectorXd k1 = rate(t, y);
-      const Eigen::VectorXd k2 = rate(t + dt / 2, y + dt / 2 * k1);
-      const Eigen::VectorXd k3 = rate(t + dt / 2, y + dt / 2 * k2);
-      const Eigen::VectorXd k4 = rate(t + dt, y + dt * k3);
-      y += dt / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-    }
-    out.push_back(c.dot(y.head(n)));
-  }
-  return out;
+  return sampled_response(
+      n,
+      [&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
+        return Eigen::VectorXd(llt.solve(f * std::sin(Omega * t) - D * qd - K * q));
+      },
+      [&](const Eigen::VectorXd& q) { return c.dot(q); }, end_s, sample_s, max_step_s);
 }
 
 SingleDofTransient::SingleDofTransient(double w, double z, double Om, double xst)

@@ -57,10 +57,8 @@ struct ZeroLoads : LoadProvider {
   void loads(double, const State&, AppliedLoads& out) override { out.gravity = gravity; }
 };
 
-// The tower's mass as points (mass, height above the tower base): the model's own Gauss rule on
-// the station table and the yaw-bearing mass — summed point by point here, an independent check
-// of the shape integrals (tower_body.hpp) that use the same points.
-std::vector<std::pair<double, double>> lumped_tower(const Params& p) {
+// The tower's station table (mass per length; EI unused here) as flexbody takes it.
+flexbody::BeamStations tower_table(const Params& p) {
   flexbody::BeamStations table;
   const double length = p.tower.top_height_m - p.tower.base_height_m;
   for (std::size_t i = 0; i < p.tower.station_fraction.size(); ++i) {
@@ -68,8 +66,16 @@ std::vector<std::pair<double, double>> lumped_tower(const Params& p) {
     table.m.push_back(p.tower.mass_density_scale * p.tower.mass_density_kg_m[i]);
     table.EI.push_back(1.0);
   }
+  return table;
+}
+
+// The tower's mass as points (mass, height above the tower base): the model's own Gauss rule on
+// the station table and the yaw-bearing mass — summed point by point here, an independent check
+// of the shape integrals (tower_body.hpp) that use the same points.
+std::vector<std::pair<double, double>> lumped_tower(const Params& p) {
+  const double length = p.tower.top_height_m - p.tower.base_height_m;
   std::vector<std::pair<double, double>> points;
-  for (const flexbody::QuadraturePoint& q : flexbody::quadrature_points(table, {flexbody::QuadratureRule::Kind::GaussLegendre, 1, 8}))
+  for (const flexbody::QuadraturePoint& q : flexbody::quadrature_points(tower_table(p), {flexbody::QuadratureRule::Kind::GaussLegendre, 1, 8}))
     points.emplace_back(q.w * q.m, q.x);
   points.emplace_back(p.nacelle.yaw_bearing_mass_kg, length);
   return points;
@@ -79,16 +85,10 @@ std::vector<std::pair<double, double>> lumped_tower(const Params& p) {
 // (3 panels × 5 points per interval, exact for m linear × a degree-6 shape) on the piece [h, L] of
 // the station table, and the yaw-bearing mass.
 std::vector<std::pair<double, double>> lumped_tower_above(const Params& p, double h) {
-  flexbody::BeamStations table;
   const double length = p.tower.top_height_m - p.tower.base_height_m;
-  for (std::size_t i = 0; i < p.tower.station_fraction.size(); ++i) {
-    table.x.push_back(p.tower.station_fraction[i] * length);
-    table.m.push_back(p.tower.mass_density_scale * p.tower.mass_density_kg_m[i]);
-    table.EI.push_back(1.0);
-  }
   std::vector<std::pair<double, double>> points;
   for (const flexbody::QuadraturePoint& q :
-       flexbody::quadrature_points(flexbody::segment(table, h, length), {flexbody::QuadratureRule::Kind::GaussLegendre, 3, 5}))
+       flexbody::quadrature_points(flexbody::segment(tower_table(p), h, length), {flexbody::QuadratureRule::Kind::GaussLegendre, 3, 5}))
     points.emplace_back(q.w * q.m, q.x + h);
   points.emplace_back(p.nacelle.yaw_bearing_mass_kg, length);
   return points;

@@ -30,6 +30,14 @@ double relative_change(const VecX& next, const VecX& previous) {
   return scale > 0.0 ? (next - previous).cwiseAbs().maxCoeff() / scale : 0.0;
 }
 
+// Linearised Morison load per length of the flow velocity `flow` (complex amplitude) at ω: the
+// inertia term (ρ C_m A) iω u plus the linearised drag c u (the body's own motion enters the
+// left-hand side through the drag damping).
+VecXc morison_excitation(const StripTable& s, const VecX& drag_damping, double omega, const VecXc& flow) {
+  return (1i * omega) * s.inertia_coefficient_kg_m.cast<std::complex<double>>().cwiseProduct(flow) +
+         drag_damping.cast<std::complex<double>>().cwiseProduct(flow);
+}
+
 }  // namespace
 
 VecXc solve_generalised(const Model& model, const Modes& modes, double omega, const VecXc& force,
@@ -65,8 +73,7 @@ HarmonicResponse solve_harmonic(const Model& model, const Modes& modes, double o
     r.drag_damping_N_s_m2 = s.drag_factor_kg_m2.cwiseProduct(gamma);
     // Wave force on strip i: inertia ρCmA u̇ (slide "Wave Force - Morison's Equation") plus the drag
     // on the flow velocity; the −c v̇ part sits in the damping matrix.
-    r.excitation_N_m = (1i * omega) * s.inertia_coefficient_kg_m.cast<std::complex<double>>().cwiseProduct(flow) +
-                       r.drag_damping_N_s_m2.cast<std::complex<double>>().cwiseProduct(flow);
+    r.excitation_N_m = morison_excitation(s, r.drag_damping_N_s_m2, omega, flow);
     r.q = solve_generalised(model, modes, omega, r.excitation_N_m, r.drag_damping_N_s_m2, options.recovery);
     r.relative_velocity_m_s = flow - (1i * omega) * (model.phi * r.q);
     const VecX next = harmonic_factor * r.relative_velocity_m_s.cwiseAbs();
@@ -109,8 +116,7 @@ RandomResponse solve_random(const Model& model, const Modes& modes, const VecX& 
     r.drag_damping_N_s_m2 = s.drag_factor_kg_m2.cwiseProduct(gamma);
     for (Eigen::Index j = 0; j < Nf; ++j) {
       const double w = omegas(j);
-      const VecXc force = (1i * w) * s.inertia_coefficient_kg_m.cast<std::complex<double>>().cwiseProduct(U.col(j)) +
-                          r.drag_damping_N_s_m2.cast<std::complex<double>>().cwiseProduct(U.col(j));
+      const VecXc force = morison_excitation(s, r.drag_damping_N_s_m2, w, U.col(j));
       r.q_transfer.col(j) = solve_generalised(model, modes, w, force, r.drag_damping_N_s_m2, options.recovery);
       r.relative_velocity_transfer.col(j) = U.col(j) - (1i * w) * (model.phi * r.q_transfer.col(j));
     }
