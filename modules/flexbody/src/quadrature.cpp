@@ -28,8 +28,10 @@ void validate(const BeamStations& s, const QuadratureRule& rule) {
   if (rule.panels < 1 || rule.points < 1) bad("quadrature rule", "panels and points must be >= 1");
 }
 
-// Nodes and weights of n-point Gauss–Legendre on [−1, 1]: Newton on P_n from the Chebyshev-like
-// guess cos(π(i + 3/4)/(n + 1/2)); converges to machine precision in a few steps.
+}  // namespace
+
+// Newton on P_n from the Chebyshev-like guess cos(π(i + 3/4)/(n + 1/2)); converges to machine
+// precision in a few steps.
 std::vector<std::pair<double, double>> gauss_legendre(int n) {
   std::vector<std::pair<double, double>> nodes;
   for (int i = 0; i < n; ++i) {
@@ -51,8 +53,6 @@ std::vector<std::pair<double, double>> gauss_legendre(int n) {
   }
   return nodes;
 }
-
-}  // namespace
 
 std::vector<QuadraturePoint> quadrature_points(const BeamStations& s, const QuadratureRule& rule) {
   validate(s, rule);

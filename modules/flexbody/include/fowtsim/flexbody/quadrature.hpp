@@ -13,6 +13,7 @@
 // and to let a caller match a code that integrates on its stations.
 #include "fowtsim/flexbody/stations.hpp"
 
+#include <utility>
 #include <vector>
 
 namespace fowtsim::flexbody {
@@ -30,6 +31,9 @@ struct QuadratureRule {
   int panels = 8;  // per station interval (GaussLegendre only)
   int points = 8;  // per panel (GaussLegendre only)
 };
+
+// Nodes t and weights w of n-point Gauss–Legendre on [−1, 1] (exact for degree <= 2n − 1).
+std::vector<std::pair<double, double>> gauss_legendre(int n);
 
 // Throws InputError for a table that is not a body (fewer than 2 stations, sizes differ, x not
 // starting at 0 or not increasing, negative m or non-positive EI) or a rule with panels/points < 1.
