@@ -46,6 +46,10 @@ VecX row_statistic(const MatX& history, const SlenderSea& sea, double dt, Eigen:
 
 }  // namespace
 
+double profile_difference(const VecX& reference, const VecX& other) {
+  return (other - reference).cwiseAbs().maxCoeff() / reference.cwiseAbs().maxCoeff();
+}
+
 SeaGrid jonswap_grid(const SlenderSea& sea) {
   SeaGrid g;
   g.delta_omega_rad_s = kTwoPi / sea.record_s;

@@ -35,6 +35,10 @@ struct SlenderResults {
 // Throws InputError (unlocated) when the transient leaves no whole wave period or no samples.
 SlenderResults solve_slender(const SlenderDeck& deck, double dt_s, double t_max_s);
 
+// max_i |other_i − reference_i| / max_i |reference_i|: how far two profiles along the body part,
+// against the reference's peak (a profile's near-zero ends would make pointwise ratios meaningless).
+double profile_difference(const VecX& reference, const VecX& other);
+
 // The wave spectrum the deck's JONSWAP sea gives on its grid ω_j = (first + j)Δω, and first.
 struct SeaGrid {
   double delta_omega_rad_s;

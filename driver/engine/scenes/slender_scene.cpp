@@ -114,12 +114,21 @@ io::Schema slender_scene_schema() {
   return io::Schema::map(std::move(fields));
 }
 
+SlenderCase read_slender_case(const io::ValidatedDeck& deck, std::optional<double> t_max_override) {
+  const SimulationKeys simulation = simulation_keys(deck);
+  const double t_max = t_max_override.value_or(simulation.t_max_s);
+  return {read_slender_deck(deck, simulation.dt_s, t_max), simulation.dt_s, t_max};
+}
+
+SlenderCase read_slender_case(const std::filesystem::path& path, const std::vector<std::string>& settings) {
+  return read_slender_case(io::read_deck(slender_scene_schema(), path, settings));
+}
+
 RunReport run_slender_scene(const RunRequest& request, const ProgressCallback& progress) {
   const io::ValidatedDeck deck = io::read_deck(slender_scene_schema(), request.deck_path, request.deck_settings);
-  const SimulationKeys simulation = simulation_keys(deck);
-  const double t_max = request.t_max_s.value_or(simulation.t_max_s);
-  const SlenderDeck d = read_slender_deck(deck, simulation.dt_s, t_max);
-  const SlenderResults r = located(deck.section("slender"), [&] { return solve_slender(d, simulation.dt_s, t_max); });
+  const SlenderCase c = read_slender_case(deck, request.t_max_s);
+  const SlenderDeck& d = c.deck;
+  const SlenderResults r = located(deck.section("slender"), [&] { return solve_slender(d, c.dt_s, c.t_max_s); });
   const std::vector<Station> stations = stations_of(r.model, d.analysis.stations_m);
   const std::filesystem::path base = output_plan(request, deck).base;
 
