@@ -1,4 +1,4 @@
-// The rows of `fowtsim verify aero|wind|multibody|control|flexbody` (cli/verify_aero_wind.cpp,
+// The rows of `fowtsim verify aero|wind|multibody|control|flexbody|slender` (cli/verify_aero_wind.cpp,
 // cli/verify_multibody_control.cpp, cli/verify_flexbody.cpp: each row with its bound and the reason for it) all pass, and
 // none goes missing: the row counts are fixed, with or without the reference data of ../shared.
 #include <algorithm>
@@ -62,9 +62,14 @@ TEST_CASE("fowtsim verify flexbody: seed 002's Rayleigh–Ritz bodies, Sec. 5.1�
   check_case("flexbody", 47, 0);
 }
 
+TEST_CASE("fowtsim verify slender: seed 004's riser and OC3 tower, modes, FD vs TD, EI vs inertia relief", "[verification][slender]") {
+  // Riser modes (1), FD vs TD amplitude for the tower and the riser (2 × 2), riser RMS (1), EI vs IR (1).
+  check_case("slender", 7, 0);
+}
+
 TEST_CASE("fowtsim verify all includes the module cases", "[unit]") {
   const std::vector<std::string> names = verification_case_names();
-  for (const char* name : {"aero", "wind", "multibody", "control", "flexbody"}) {
+  for (const char* name : {"aero", "wind", "multibody", "control", "flexbody", "slender"}) {
     INFO(name);
     CHECK(std::find(names.begin(), names.end(), name) != names.end());
   }

@@ -17,6 +17,7 @@
 #include "scenes/beam_scene.hpp"
 #include "scenes/floating_scene.hpp"
 #include "scenes/platform_scene.hpp"
+#include "scenes/slender_scene.hpp"
 #include "scenes/toy_scene.hpp"
 
 namespace fowtsim::driver {
@@ -24,10 +25,11 @@ namespace {
 
 // The top-level keys that make a deck a scene deck, with the scene each one picks, in the order
 // run_scene tries them.
-constexpr std::array<std::pair<const char*, const char*>, 4> kSceneKeys = {{
+constexpr std::array<std::pair<const char*, const char*>, 5> kSceneKeys = {{
     {"beam", "one clamped beam"},
     {"platform_motion", "platform loads on a prescribed motion"},
     {"structure", "floating turbine"},
+    {"slender", "a slender body in waves"},
     {"toy_oscillators", "the coupling test problem"},
 }};
 
@@ -127,6 +129,7 @@ RunReport run_picked_scene(const RunRequest& request, const ProgressCallback& pr
   if (scene == "beam") return run_beam_scene(request, progress);
   if (scene == "platform_motion") return run_platform_scene(request, progress);
   if (scene == "structure") return run_floating_scene(request, progress);
+  if (scene == "slender") return run_slender_scene(request, progress);
   const io::ValidatedDeck deck = io::read_deck(toy_scene_schema(), request.deck_path, request.deck_settings);
   return run_toy_scene(deck, request, progress);
 }

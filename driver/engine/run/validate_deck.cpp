@@ -5,6 +5,7 @@
 #include "scenes/beam_scene.hpp"
 #include "scenes/floating_scene.hpp"
 #include "scenes/platform_scene.hpp"
+#include "scenes/slender_scene.hpp"
 #include "scenes/toy_scene.hpp"
 
 namespace fowtsim::driver {
@@ -21,6 +22,8 @@ std::string validate_scene_deck(const std::filesystem::path& path) {
   } else if (root.find("structure")) {
     const io::ValidatedDeck deck = io::validate(floating_scene_schema(), std::move(loaded));
     const FloatingScene scene(deck, FloatingScene::SetUp::check);  // its constructor applies the rules
+  } else if (root.find("slender")) {
+    io::validate(slender_scene_schema(), std::move(loaded));
   } else {
     io::validate(toy_scene_schema(), std::move(loaded));
   }

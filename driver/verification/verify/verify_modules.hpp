@@ -23,5 +23,8 @@ std::vector<VerificationRow> verify_control(std::FILE* out);
 // Seed 002's Rayleigh–Ritz bodies (modules/flexbody): Sec. 5.1 closed forms, top-mass modes and
 // buckling, welib's uniform beam, Table 1, Sec. 6's M_q/K_q, Sec. 5.3 torsion, Sec. 5.2 Kane's spin-up.
 std::vector<VerificationRow> verify_flexbody(std::FILE* out);
+// Seed 004's slender bodies (modules/slender) on inputs/slender/: riser modes against the closed
+// form, FD vs TD (drag linearisation) in a regular wave and a JONSWAP sea, EI v'' vs inertia relief.
+std::vector<VerificationRow> verify_slender(std::FILE* out);
 
 }  // namespace fowtsim::driver

@@ -1,6 +1,7 @@
 #include "fowtsim/slender/frequency_domain.hpp"
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/slender/bending_moment.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -141,6 +142,15 @@ RmsProfiles rms_profiles(const Model& model, const RandomResponse& r) {
   p.displacement_m = ((model.phi * r.q_transfer).cwiseAbs2() * weight).cwiseSqrt();
   p.bending_moment_N_m = (moment.cwiseAbs2() * weight).cwiseSqrt();
   p.stress_Pa = p.bending_moment_N_m.cwiseQuotient(model.strips.section_modulus_m3);
+  VecX variance = VecX::Zero(model.strips.x_m.size());
+  for (Eigen::Index j = 0; j < r.omega_rad_s.size(); ++j) {
+    const HarmonicResponse unit{r.omega_rad_s(j), 1.0, r.q_transfer.col(j), r.relative_velocity_transfer.col(j), {},
+                                r.drag_damping_N_s_m2, r.iterations};
+    const VecXc load = harmonic_load_per_length(model, unit);
+    variance += inertia_relief_moment<std::complex<double>>(model, load, unit.q).cwiseAbs2() * weight(j);
+  }
+  p.inertia_relief_moment_N_m = variance.cwiseSqrt();
+  p.inertia_relief_stress_Pa = p.inertia_relief_moment_N_m.cwiseQuotient(model.strips.section_modulus_m3);
   return p;
 }
 

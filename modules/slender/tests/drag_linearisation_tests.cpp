@@ -75,8 +75,7 @@ TEST_CASE("irregular sea: FD with γ = √(8/π)σ_{u_r} against the RMS of long
     const int steps = 2 * per_record;  // first record: transient; second: statistics
     const TimeDomainResult td = simulate(model, modes, random_wave_history(U, components, dt / 2, 2 * steps + 1),
                                          {dt, steps});
-    const VecX tail = td.q.row(0).tail(per_record).transpose();
-    const double rms = std::sqrt((tail.array() - tail.mean()).square().mean());
+    const double rms = standard_deviation(td.q.row(0).transpose(), td.q.cols() - per_record, per_record);
     worst = std::max(worst, std::abs(rms / sigma_fd - 1.0));
     mean += rms / seeds;
   }

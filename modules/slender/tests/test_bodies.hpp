@@ -16,6 +16,7 @@ inline Strip steel_tube() { return {0.0, 0.5, 0.45, 7850.0, 2.1e11, 1.0, 1.0, 0.
 
 }  // namespace fowtsim::slender::testing
 
+#include "fowtsim/slender/statistics.hpp"
 #include "fowtsim/slender/wave_synthesis.hpp"
 
 #include <cmath>
@@ -29,14 +30,6 @@ namespace fowtsim::slender::testing {
 inline double pierson_moskowitz(double omega, double hs, double tp) {
   const double wp = 2 * std::numbers::pi / tp;
   return 5.0 / 16.0 * hs * hs * std::pow(wp, 4) * std::pow(omega, -5) * std::exp(-1.25 * std::pow(wp / omega, 4));
-}
-
-// Complex amplitude of the ω-component of a series sampled at interval dt over samples
-// [first, first + count), count spanning whole periods: (2/count) Σ y_k e^{−iωt_k}.
-inline std::complex<double> fourier_coefficient(const Eigen::VectorXd& y, double omega, double dt, int first, int count) {
-  std::complex<double> sum = 0.0;
-  for (int k = first; k < first + count; ++k) sum += y(k) * std::exp(std::complex<double>(0.0, -omega * k * dt));
-  return 2.0 * sum / static_cast<double>(count);
 }
 
 }  // namespace fowtsim::slender::testing

@@ -67,10 +67,14 @@ RandomResponse solve_random(const Model& model, const Modes& modes, const VecX& 
 struct RmsProfiles {
   VecX displacement_m;     // σ_v per strip (N)
   VecX bending_moment_N_m; // σ of EI v'' (N)
-  VecX stress_Pa;          // σ of the bending stress M/Z at the outer fibre (N)
+  VecX stress_Pa;          // σ of the bending stress EI v''/Z at the outer fibre (N)
+  VecX inertia_relief_moment_N_m; // σ of the inertia-relief moment (N): the only one of a rigid body
+  VecX inertia_relief_stress_Pa;  // σ of its stress M_IR/Z (N)
 };
 
 // σ² = Σ_j S_η(ω_j)|H(ω_j)|² Δω for each response H (slide "Frequency Domain Analysis & Random Wave").
+// The inertia-relief moment's H(ω_j) is inertia_relief_moment on the load per unit wave amplitude
+// (harmonic_load_per_length of the response at ω_j with the converged linear drag).
 RmsProfiles rms_profiles(const Model& model, const RandomResponse& response);
 
 // Response spectrum of the displacement, S_v(x_i, ω_j) = |V_i(ω_j)|² S_η(ω_j) (N × Nf) [m²·s/rad].

@@ -1,0 +1,99 @@
+// The seed 004 applications as shipped (inputs/slender/): the OC3 spar and tower as a rigid floating
+// body and the seed 000 Sec. 3.5.3 riser, frequency domain against time domain in a regular wave
+// (steady-state amplitude) and in a JONSWAP sea (RMS over seeds), and the riser's bending moment by
+// EI v'' against inertia relief as strips and shapes are refined.
+#include <cmath>
+#include <iostream>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "fowtsim/slender/shape_functions.hpp"
+#include "fowtsim/testing/skip.hpp"
+#include "scenes/slender_analysis.hpp"
+#include "scenes/slender_scene.hpp"
+
+using namespace fowtsim;
+using namespace fowtsim::driver;
+
+namespace {
+
+std::filesystem::path shipped(const std::string& name) { return testing::source_dir() / "inputs/slender" / name; }
+
+SlenderResults solve(const SlenderCase& c) { return solve_slender(c.deck, c.dt_s, c.t_max_s); }
+
+struct Parting {
+  double displacement, stress;  // profile_difference TD against FD
+};
+Parting parting(const SlenderResults& r) {
+  return {profile_difference(r.frequency_domain->displacement_m, r.time_domain->displacement_m),
+          profile_difference(r.frequency_domain->stress_inertia_relief_Pa, r.time_domain->stress_inertia_relief_Pa)};
+}
+
+}  // namespace
+
+TEST_CASE("slender decks, regular wave: FD amplitude profiles equal the TD steady state within 1 %", "[verification]") {
+  for (const char* deck : {"oc3_tower_harmonic.yaml", "riser_harmonic.yaml"}) {
+    const Parting p = parting(solve(read_slender_case(shipped(deck))));
+    std::cout << deck << ": FD vs TD amplitude, displacement " << p.displacement << ", stress (IR) " << p.stress << "\n";
+    // The bound, 1 %. The two differ by the drag linearisation only (8/3π|u_r| matches the
+    // drag's work per cycle, not its shape): measured 8.0e-6 / 1.2e-6 on the inertia-dominated spar
+    // (KC ≈ 2), 6.1e-3 / 8.2e-3 on the drag-loaded riser top. The riser leaves no 10× margin: its
+    // linearisation error is the physics, and 1 % is the acceptance.
+    CHECK(p.displacement < 1e-2);
+    CHECK(p.stress < 1e-2);
+  }
+}
+
+TEST_CASE("slender decks, JONSWAP: TD RMS profiles scatter about the FD ones by the seed scatter", "[verification]") {
+  for (const char* deck : {"oc3_tower_jonswap.yaml", "riser_jonswap.yaml"}) {
+    constexpr int kSeeds = 4;
+    double mean_d = 0.0, mean_s = 0.0, sq_d = 0.0, sq_s = 0.0;
+    for (int seed = 1; seed <= kSeeds; ++seed) {
+      const SlenderResults r = solve(read_slender_case(shipped(deck), {"sea.seed=" + std::to_string(seed)}));
+      // Signed: the TD peak RMS against the FD one.
+      const double d = r.time_domain->displacement_m.maxCoeff() / r.frequency_domain->displacement_m.maxCoeff() - 1.0;
+      const double s = r.time_domain->stress_inertia_relief_Pa.maxCoeff() / r.frequency_domain->stress_inertia_relief_Pa.maxCoeff() - 1.0;
+      mean_d += d / kSeeds, mean_s += s / kSeeds, sq_d += d * d / kSeeds, sq_s += s * s / kSeeds;
+      std::cout << deck << " seed " << seed << ": TD/FD − 1 peak RMS displacement " << d << ", stress (IR) " << s << "\n";
+    }
+    const double sd_d = std::sqrt(sq_d - mean_d * mean_d), sd_s = std::sqrt(sq_s - mean_s * mean_s);
+    std::cout << deck << ": mean " << mean_d << ", " << mean_s << "; seed scatter (σ) " << sd_d << ", " << sd_s << "\n";
+    // One whole 1200 s record per seed: over a full record the components are orthogonal, so a
+    // linear response's TD variance equals the FD sum exactly and the seeds scatter only through
+    // the drag's nonlinearity. Measured (mean; σ over 4 seeds): spar 9.3e-4; 3.4e-4 (displacement),
+    // 3.7e-5; 1.8e-5 (stress); riser 3.4e-2; 2.1e-2 and 5.6e-2; 1.0e-2, TD above FD as on the
+    // module's one-DOF cylinder (3.6e-2, modules/slender README): Gaussian statistical linearisation
+    // underestimates a drag-loaded response. Bound: 3 seed σ plus that bias, taken as 5e-2.
+    CHECK(std::abs(mean_d) < 3.0 * sd_d + 5e-2);
+    CHECK(std::abs(mean_s) < 3.0 * sd_s + 5e-2);
+  }
+}
+
+TEST_CASE("riser: the bending moment by EI v'' and by inertia relief converge to each other", "[verification]") {
+  const SlenderCase shipped_case = read_slender_case(shipped("riser_harmonic.yaml"), {"analysis.domain=frequency"});
+  double previous = 1e300, finest = 0.0;
+  for (int refine : {1, 2, 4, 8}) {
+    SlenderCase c = shipped_case;
+    slender::BodyDescription& body = c.deck.body;
+    std::vector<slender::Strip> strips;
+    for (slender::Strip s : body.strips) {
+      s.length_m /= refine;
+      strips.insert(strips.end(), static_cast<std::size_t>(refine), s);
+    }
+    body.strips = strips;
+    const double length = body.shapes.front().length_m;
+    body.shapes = slender::pinned_pinned_shapes(16 * refine, length);
+    const SlenderResults r = solve(c);
+    finest = profile_difference(r.frequency_domain->moment_inertia_relief_N_m, r.frequency_domain->moment_elastic_N_m);
+    std::cout << "riser " << body.strips.size() << " strips, " << body.shapes.size() << " sines: max |M_EI − M_IR| / max M_IR "
+              << finest << "\n";
+    // Both converge: the tension's boundary layer at the pinned ends, √(EI/T) ≈ 2.7 m, needs strips
+    // and sines finer than it before EI v'' resolves the peak moment; inertia relief, a force
+    // balance, resolves it sooner. Measured 0.83, 0.44, 0.13, 0.033 (second order at the end);
+    // the finest within 0.1 (3×: the rate is established, a stall would show).
+    CHECK(finest < previous);
+    previous = finest;
+  }
+  CHECK(finest < 0.1);
+}
