@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -57,7 +58,7 @@ std::vector<std::string> summary(const SlenderResults& r, bool regular) {
   const slender::Modes& m = r.modes;
   std::string periods;
   for (Eigen::Index k = 0; k < std::min<Eigen::Index>(m.omega_rad_s.size(), 6); ++k)
-    periods += fmt::format(" {:.4g}", 2 * 3.14159265358979323846 / m.omega_rad_s(k));
+    periods += fmt::format(" {:.4g}", 2 * std::numbers::pi / m.omega_rad_s(k));
   lines.push_back(fmt::format("{} strips, {} shapes, {} modes; periods [s]:{}", r.model.strips.x_m.size(), r.model.phi.cols(),
                               m.omega_rad_s.size(), periods));
   if (r.frequency_domain) lines.push_back(fmt::format("drag linearisation: {} iterations", r.drag_iterations));
