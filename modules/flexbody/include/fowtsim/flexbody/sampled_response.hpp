@@ -4,6 +4,7 @@
 // interval: the time loop the seed's unsteady checks (Sec. 5.2 spin-up, Sec. 5.3 torsion) share.
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -15,7 +16,7 @@ namespace fowtsim::flexbody {
 // observe(q) at t = k·sample_s, k = 0 … round(end_s/sample_s), with ⌈sample_s/max_step_s⌉ equal
 // steps per sample; `acceleration(t, q, q̇)` returns q̈ (n values). The caller checks the times.
 template <class Acceleration, class Observe>
-std::vector<double> sampled_response(Eigen::Index n, const Acceleration& acceleration, const Observe& observe,
+std::vector<std::invoke_result_t<const Observe&, Eigen::VectorXd>> sampled_response(Eigen::Index n, const Acceleration& acceleration, const Observe& observe,
                                      double end_s, double sample_s, double max_step_s) {
   const auto rate = [&](double t, const Eigen::VectorXd& y) {
     Eigen::VectorXd out(2 * n);
@@ -27,7 +28,7 @@ std::vector<double> sampled_response(Eigen::Index n, const Acceleration& acceler
   const long substeps = std::max(1L, static_cast<long>(std::ceil(sample_s / max_step_s - 1e-9)));
   const double dt = sample_s / static_cast<double>(substeps);
   Eigen::VectorXd y = Eigen::VectorXd::Zero(2 * n);
-  std::vector<double> out{observe(Eigen::VectorXd(y.head(n)))};
+  std::vector<std::invoke_result_t<const Observe&, Eigen::VectorXd>> out{observe(Eigen::VectorXd(y.head(n)))};
   out.reserve(static_cast<std::size_t>(samples) + 1);
   for (long k = 0; k < samples; ++k) {
     for (long s = 0; s < substeps; ++s)
