@@ -9,7 +9,7 @@
 
 using namespace fowtsim::driver;
 
-TEST_CASE("Pre-bent spin-up (seed 002 Sec. 5.4): coupled RR vs the MBBT beam", "[verification]") {
+TEST_CASE("Kane's spin-up of the pre-bent beam (seed 002 Sec. 5.4): coupled RR vs the MBBT beam", "[verification]") {
   const PrebentSpinUp h = prebent_spin_up_histories();
   REQUIRE(h.mbbt.edge.size() == h.rr.edge.size());
   const PrebentComparison c = compare(h);
