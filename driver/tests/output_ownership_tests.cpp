@@ -159,3 +159,66 @@ TEST_CASE("an interrupted run restarted without -o continues its own output: the
   }
   CHECK_FALSE(std::filesystem::exists(dir / "unused.h5"));
 }
+
+namespace {
+
+// The riser in a regular wave; `settings` pick the domain and shorten the time domain.
+RunRequest riser_request(const std::filesystem::path& base, std::vector<std::string> settings) {
+  RunRequest r = run_request(testing::source_dir() / "inputs/slender/riser_harmonic.yaml", base, "out");
+  r.deck_settings = std::move(settings);
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("a slender run's profile table is owned like the time series: locked, whole, a dead run's kept", "[unit][run]") {
+  const auto dir = testing::scratch_dir("own_slender_table");
+  const RunRequest r = riser_request(dir / "x", {"analysis.domain=frequency"});
+  std::ofstream(dir / "x.amplitude.csv") << "an earlier run's table\n";
+  std::ofstream(dir / "x.amplitude.running.csv") << "half the table of a run that was killed\n";
+  {
+    OutputSet live(dir / "x", "h5");  // another run writing x
+    CHECK_THAT(message_of([&] { run_scene(r, nullptr); }), Catch::Contains("being written by another run"));
+    CHECK(bytes_of(dir / "x.amplitude.csv") == "an earlier run's table\n");
+    CHECK(bytes_of(dir / "x.amplitude.running.csv") == "half the table of a run that was killed\n");
+  }
+  const RunReport report = run_scene(r, nullptr);
+  CHECK(report.outputs == std::vector<std::filesystem::path>{dir / "x.amplitude.csv"});
+  CHECK_THAT(bytes_of(dir / "x.amplitude.csv"), Catch::StartsWith("x_m,outer_diameter_m,fd_displacement_m,"));
+  CHECK(bytes_of(dir / "x.amplitude.unfinished.csv") == "half the table of a run that was killed\n");
+  REQUIRE(report.warnings.size() == 1);
+  CHECK_THAT(report.warnings.front(), Catch::Contains("kept as"));
+  CHECK_FALSE(std::filesystem::exists(dir / "x.amplitude.running.csv"));
+  CHECK_FALSE(std::filesystem::exists(dir / "x.out"));  // no time domain, no time series
+  CHECK_FALSE(std::filesystem::exists(dir / "x.lock"));
+}
+
+TEST_CASE("a slender run's profile table stays under its running name until the time series is complete", "[unit][run]") {
+  const auto dir = testing::scratch_dir("own_slender_running");
+  const RunRequest r = riser_request(dir / "x", {"simulation.t_max_s=40", "analysis.transient_s=10"});
+  bool seen = false;
+  const RunReport report = run_scene(r, [&](double, double) {
+    if (seen) return;
+    seen = true;
+    CHECK(std::filesystem::exists(dir / "x.amplitude.running.csv"));
+    CHECK_FALSE(std::filesystem::exists(dir / "x.amplitude.csv"));
+  });
+  CHECK(seen);
+  CHECK(report.outputs == std::vector<std::filesystem::path>{dir / "x.out", dir / "x.amplitude.csv"});
+  CHECK(io::read_channels(dir / "x.out").status == "completed");
+  CHECK_THAT(bytes_of(dir / "x.amplitude.csv"), Catch::Contains(",td_displacement_m,"));
+  CHECK_FALSE(std::filesystem::exists(dir / "x.amplitude.running.csv"));
+}
+
+TEST_CASE("a slender run refuses --checkpoint-every and --restart before it solves or writes anything", "[unit][run]") {
+  const auto dir = testing::scratch_dir("own_slender_checkpoint");
+  RunRequest r = riser_request(dir / "x", {});
+  r.checkpoint_every_s = 100.0;
+  CHECK_THAT(message_of([&] { run_scene(r, nullptr); }),
+             Catch::Contains("riser_harmonic.yaml") && Catch::Contains("--checkpoint-every") &&
+                 Catch::Contains("solves the whole record"));
+  r.checkpoint_every_s.reset();
+  r.restart_path = dir / "x.chk";
+  CHECK_THAT(message_of([&] { run_scene(r, nullptr); }), Catch::Contains("--restart") && Catch::Contains("restarts"));
+  CHECK(std::filesystem::is_empty(dir));
+}

@@ -3,6 +3,7 @@
 // (steady-state amplitude) and in a JONSWAP sea (RMS over seeds), and the riser's bending moment by
 // EI v'' against inertia relief as strips and shapes are refined.
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <string>
 
@@ -10,8 +11,12 @@
 
 #include "fowtsim/slender/shape_functions.hpp"
 #include "fowtsim/testing/skip.hpp"
+#include "run/run_scene.hpp"
+#include "run_request.hpp"
+#include "test_helpers.hpp"
 #include "scenes/slender_analysis.hpp"
 #include "scenes/slender_scene.hpp"
+#include "verify/reports.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -96,4 +101,36 @@ TEST_CASE("riser: the bending moment by EI v'' and by inertia relief converge to
     previous = finest;
   }
   CHECK(finest < 0.1);
+}
+
+TEST_CASE("a frequency-domain slender run's summary says what was solved, not a time loop it never ran", "[unit]") {
+  RunRequest r = run_request(shipped("riser_harmonic.yaml"), testing::scratch_dir("slender_summary") / "x", std::nullopt);
+  r.deck_settings = {"analysis.domain=frequency"};
+  const RunReport report = run_scene(r, nullptr);
+  CHECK_FALSE(report.time_loop);
+  std::FILE* out = std::tmpfile();
+  print_run_summary(out, report);
+  std::rewind(out);
+  std::string summary(8192, '\0');
+  summary.resize(std::fread(summary.data(), 1, summary.size(), out));
+  std::fclose(out);
+  CHECK_THAT(summary, Catch::Contains("solved           frequency domain: 100 strips, 16 shapes, 8 modes; periods [s]:") &&
+                          Catch::Contains("drag linearised in") && Catch::Contains("largest amplitude along the body"));
+  CHECK_THAT(summary, !Catch::Contains("large steps") && !Catch::Contains("simulated time") && !Catch::Contains("real-time"));
+}
+
+TEST_CASE("a slender deck too large to hold in memory is refused at its key, not as std::bad_alloc", "[unit]") {
+  CHECK_THAT(message_of([] { read_slender_case(shipped("riser_harmonic.yaml"), {"simulation.t_max_s=1e18"}); }),
+             Catch::Contains("simulation.t_max_s") && Catch::Contains("100 strips × 4e+19 half steps"));
+  CHECK_THAT(message_of([] { read_slender_case(shipped("riser_jonswap.yaml"), {"analysis.domain=frequency", "sea.record_s=1e9"}); }),
+             Catch::Contains("--set sea.record_s") && Catch::Contains("wave components"));
+}
+
+TEST_CASE("a slender deck: an integer key past the int range is refused, not wrapped (fuzzer: output.decimation 2^32 was a SIGFPE)", "[unit]") {
+  RunRequest r = run_request(shipped("riser_harmonic.yaml"), testing::scratch_dir("slender_int_range") / "x", std::nullopt);
+  r.deck_settings = {"output.decimation=4294967296"};
+  CHECK_THAT(message_of([&] { run_scene(r, nullptr); }),
+             Catch::Contains("output.decimation") && Catch::Contains("4294967296 is out of range"));
+  r.deck_settings = {"analysis.modes=4294967297"};  // would wrap to 1
+  CHECK_THAT(message_of([&] { run_scene(r, nullptr); }), Catch::Contains("analysis.modes") && Catch::Contains("out of range"));
 }

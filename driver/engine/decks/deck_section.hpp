@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -149,7 +150,14 @@ class DeckSection {
   static T value(const io::ValidatedDeck& d, const std::string& k) {
     if constexpr (is_optional<T>::value) return value<typename T::value_type>(d, k);
     else if constexpr (std::is_same_v<T, double>) return d.number(k);
-    else if constexpr (std::is_same_v<T, int>) return static_cast<int>(d.integer(k));
+    else if constexpr (std::is_same_v<T, int>) {
+      // The schema's integers are 64-bit: one read into an int must not wrap (decimation 2^32 → 0).
+      const std::int64_t n = d.integer(k);
+      if (n < std::numeric_limits<int>::min() || n > std::numeric_limits<int>::max())
+        throw InputError({"deck", std::nullopt, k, fmt::format("at most {}", std::numeric_limits<int>::max())},
+                         where(d, k) + fmt::format(": {} is out of range", n));
+      return static_cast<int>(n);
+    }
     else if constexpr (std::is_same_v<T, std::uint64_t>) return static_cast<std::uint64_t>(d.integer(k));
     else if constexpr (std::is_same_v<T, bool>) return d.boolean(k);
     else if constexpr (std::is_same_v<T, std::string>) return d.string(k);

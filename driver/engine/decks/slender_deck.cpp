@@ -251,6 +251,17 @@ std::optional<long> whole_steps(double span, double step) {
   return n >= 1 && std::abs(static_cast<double>(n) * step - span) <= 1e-9 * span ? std::optional(n) : std::nullopt;
 }
 
+// The solution holds its largest arrays whole in memory, strips × samples values each (the JONSWAP
+// transfer table, the time domain's history, the record's FFT): past about 2 GB a deck is refused
+// here, naming the key, instead of failing as std::bad_alloc mid-solve.
+void check_size(const io::ValidatedDeck& deck, const std::string& key, const std::string& expected, std::size_t strips,
+                double samples, const char* what) {
+  constexpr double kMaxValues = 4e7;
+  if (static_cast<double>(strips) * samples > kMaxValues)
+    bad(deck, key, expected,
+        fmt::format("{} strips × {:.3g} {} is more than the {:.0e} values the solution can hold", strips, samples, what, kMaxValues));
+}
+
 }  // namespace
 
 SlenderDeck read_slender_deck(const io::ValidatedDeck& deck, double time_step_s, double t_max_s) {
@@ -271,7 +282,16 @@ SlenderDeck read_slender_deck(const io::ValidatedDeck& deck, double time_step_s,
     if (d.analysis.stations_m[i] < 0.0 || d.analysis.stations_m[i] > length)
       bad(deck, fmt::format("analysis.stations_m[{}]", i), fmt::format("within the body, 0 … {} m", length),
           fmt::format("{} m is off the body", d.analysis.stations_m[i]));
+  const std::size_t strips = d.body.strips.size();
+  if (!d.sea.regular)
+    check_size(deck, "sea.record_s", "a shorter record (fewer wave components) or fewer strips", strips,
+               (d.sea.max_omega_rad_s - d.sea.min_omega_rad_s) * d.sea.record_s / (2 * std::numbers::pi), "wave components");
   if (d.analysis.time_domain) {
+    check_size(deck, "simulation.t_max_s", "a shorter simulated time, a longer simulation.dt_s or fewer strips", strips,
+               2 * t_max_s / time_step_s, "half steps");
+    if (!d.sea.regular)
+      check_size(deck, "sea.record_s", "a shorter record or a longer simulation.dt_s", strips, 2 * d.sea.record_s / time_step_s,
+                 "half steps of the record");
     // The TD amplitude is a Fourier coefficient over whole wave periods; the random sea is sampled
     // at Δt/2 by an FFT of the record's length, so both must be whole numbers of steps.
     if (d.sea.regular && !whole_steps(d.sea.period_s, time_step_s))

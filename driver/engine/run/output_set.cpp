@@ -84,10 +84,16 @@ std::uint64_t reserve_bytes(std::size_t channels, const std::vector<std::filesys
 
 }  // namespace
 
-OutputSet::OutputSet(const std::filesystem::path& base, const std::string& format) : lock_(base), base_(base) {
+OutputSet::OutputSet(const std::filesystem::path& base, const std::string& format, std::vector<WholeFile> whole)
+    : lock_(base), base_(base) {
   if (format == "h5" || format == "both") paths_.push_back(std::filesystem::path(base.string() + ".h5"));
   if (format == "out" || format == "both") paths_.push_back(std::filesystem::path(base.string() + ".out"));
   if (format == "outb") paths_.push_back(std::filesystem::path(base.string() + ".outb"));
+  const std::size_t series = paths_.size();
+  for (WholeFile& w : whole) {
+    paths_.push_back(std::filesystem::path(base.string() + w.suffix));
+    whole_bytes_.push_back(std::move(w.bytes));
+  }
   for (const auto& p : paths_) {
     if (std::filesystem::is_directory(p))
       throw InputError({"run", std::nullopt, "-o", "a file name, not a folder's"},
@@ -105,7 +111,8 @@ OutputSet::OutputSet(const std::filesystem::path& base, const std::string& forma
     notes_.push_back(fmt::format("{} was left by a run that stopped without closing it (killed?): kept as {}", p.string(),
                                  kept.string()));
   }
-  for (const auto& p : running_paths_) {
+  for (std::size_t i = 0; i < series; ++i) {
+    const std::filesystem::path& p = running_paths_[i];
     if (p.extension() == ".h5")
       sinks_.push_back(std::make_unique<io::Hdf5Writer>(p));
     else if (p.extension() == ".outb")
@@ -144,6 +151,7 @@ void OutputSet::guarded(Write&& write) {
 }
 
 void OutputSet::begin(const std::vector<ChannelInfo>& channels, const io::RunMetadata& metadata) {
+  for (std::size_t i = 0; i < whole_bytes_.size(); ++i) write_file_atomically(running_paths_[sinks_.size() + i], whole_bytes_[i]);
   reserve_ = DiskReserve(running_path(std::filesystem::path(base_.string() + ".reserve")), reserve_bytes(channels.size(), paths_));
   for (const auto& p : paths_)
     if (p.extension() == ".outb")

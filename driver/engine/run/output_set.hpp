@@ -1,6 +1,6 @@
 #pragma once
-// The output files of one run (HDF5, OpenFAST text .out, OpenFAST binary .outb), fed together, and how their names are
-// chosen. A run owns its files:
+// The output files of one run (HDF5, OpenFAST text .out, OpenFAST binary .outb, and tables the run
+// computed whole before its time loop), fed together, and how their names are chosen. A run owns its files:
 // - it holds the name's lock (run/output_lock.hpp) from before the first file is touched to the
 //   end, so a second run on the same name stops at once and names the holder;
 // - files are written under a temporary name in the same folder (runs/x.running.h5 for
@@ -41,20 +41,30 @@ std::pair<std::filesystem::path, std::string> split_known_extension(const std::f
 // The temporary name `final_path` is written under while the run is going.
 std::filesystem::path running_path(const std::filesystem::path& final_path);
 
+// A file a run computes whole before its time loop (the slender scene's profile table): named
+// base + suffix and owned like the time series, so it cannot be clobbered by a second run or left
+// half-written under its final name.
+struct WholeFile {
+  std::string suffix;  // e.g. ".amplitude.csv"
+  std::string bytes;
+};
+
 class OutputSet {
  public:
-  // format: "h5", "out", "outb" or "both" (.h5 and .out); files are base + ".h5" / ".out" /
-  // ".outb"; the folder is created. Takes the lock and moves a dead run's temporaries aside; a
-  // final name that is a folder is an InputError. Creates no output file yet.
-  OutputSet(const std::filesystem::path& base, const std::string& format);
+  // format: "h5", "out", "outb", "both" (.h5 and .out) or "none" (only `whole`); files are
+  // base + ".h5" / ".out" / ".outb", then base + each whole file's suffix; the folder is created.
+  // Takes the lock and moves a dead run's temporaries aside; a final name that is a folder is an
+  // InputError. Creates no output file yet.
+  OutputSet(const std::filesystem::path& base, const std::string& format, std::vector<WholeFile> whole = {});
   // Without finish(): the writers close their files (status "incomplete"); files holding at
   // least one row get their final name, files without any are removed. Never throws.
   ~OutputSet();
   OutputSet(const OutputSet&) = delete;
   OutputSet& operator=(const OutputSet&) = delete;
 
-  // Holds back disk space for closing the files (fowtsim::Error if the disk cannot spare it), then
-  // creates them. An .outb's cut channel names are added to notes().
+  // Writes the whole files under their running names (durable_file.hpp: complete and fsync'ed or
+  // absent), holds back disk space for closing the time series (fowtsim::Error if the disk cannot
+  // spare it), then creates them. An .outb's cut channel names are added to notes().
   void begin(const std::vector<ChannelInfo>& channels, const io::RunMetadata& metadata);
   // A write that fails frees the held-back space first, so the rows stay buffered for finish();
   // the error then says whether the disk is full.
@@ -82,7 +92,8 @@ class OutputSet {
   OutputLock lock_;  // first: taken before anything else is touched, released last
   std::filesystem::path base_;
   DiskReserve reserve_;
-  std::vector<std::unique_ptr<io::OutputSink>> sinks_;
+  std::vector<std::unique_ptr<io::OutputSink>> sinks_;  // the time series: the first sinks_.size() paths
+  std::vector<std::string> whole_bytes_;                // the whole files: the paths after them
   std::vector<std::filesystem::path> paths_;
   std::vector<std::filesystem::path> running_paths_;
   std::vector<std::filesystem::path> set_aside_;

@@ -29,7 +29,9 @@ struct RunReport {
   double total_wall_s = 0.0;                   // of the whole run: decks, set-up (turbulence, sea), loop, output [s]
   long large_steps = 0;                        // large steps taken
   int substeps = 1;                            // small steps per large step
-  std::string coupling;                        // coupling mode
+  std::string coupling;                        // coupling mode; without a time loop, what was solved
+  bool time_loop = true;                       // false: solved without stepping in time (a frequency-domain
+                                               // solution): no simulated time, steps or real-time factor
   std::vector<std::filesystem::path> outputs;  // files written
   std::vector<std::string> warnings;           // shown in the summary
   std::vector<std::string> results;            // lines of results asked for by the deck (summary)

@@ -138,7 +138,7 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
   const std::filesystem::path base = checkpoint && !request.output_base ? checkpoint->output_base : plan.base;
   const std::filesystem::path checkpoint_file = base.string() + ".chk";
   const std::filesystem::path absolute_base = std::filesystem::absolute(base);  // recorded in checkpoints
-  OutputSet outputs(base, plan.format);
+  OutputSet outputs(base, plan.format, std::move(scene.whole_files));
   scene.metadata.version = kVersion;
   if (!request.deck_settings.empty()) {  // the deck hash covers them; this says what they were
     std::string settings;

@@ -14,6 +14,7 @@
 #include "fowtsim/io/output_sink.hpp"
 #include "fowtsim/io/schema.hpp"
 #include "run/checkpoint.hpp"
+#include "run/output_set.hpp"
 #include "run/run_types.hpp"
 
 namespace fowtsim::driver {
@@ -48,6 +49,8 @@ struct FixedStepScene {
   // The scene's whole changing state, for checkpoints and restarts (empty: not supported).
   std::function<void(CheckpointWriter&)> save;
   std::function<void(CheckpointReader&)> load;
+  // Tables the scene computed before the loop, written and owned with the time series.
+  std::vector<WholeFile> whole_files;
 };
 
 // The time axis and the files of a run: rows at t0, t0 + dt, …, t0 + steps·dt.

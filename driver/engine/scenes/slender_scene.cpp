@@ -1,7 +1,6 @@
 #include "scenes/slender_scene.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -9,6 +8,7 @@
 #include "decks/deck_helpers.hpp"
 #include "decks/slender_deck.hpp"
 #include "run/channel_selection.hpp"
+#include "run/output_set.hpp"
 #include "scenes/scene_runner.hpp"
 #include "scenes/slender_analysis.hpp"
 
@@ -28,40 +28,41 @@ constexpr ProfileColumn kColumns[] = {
     {"stress_ir_Pa", &SlenderProfiles::stress_inertia_relief_Pa},
 };
 
-std::filesystem::path write_profiles(const std::filesystem::path& base, const SlenderResults& r, bool regular) {
-  std::filesystem::path path = base;
-  path += regular ? ".amplitude.csv" : ".rms.csv";
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  std::ofstream csv(path);
-  if (!csv) throw InputError({"slender", std::nullopt, "-o", "a writable output folder"}, "cannot write " + path.string());
+// The profile table, <output>.amplitude.csv (regular wave) or <output>.rms.csv (JONSWAP).
+WholeFile profiles_csv(const SlenderResults& r, bool regular) {
   const std::vector<std::pair<const char*, const SlenderProfiles*>> domains = {
       {"fd", r.frequency_domain ? &*r.frequency_domain : nullptr}, {"td", r.time_domain ? &*r.time_domain : nullptr}};
-  csv << "x_m,outer_diameter_m";
+  std::string csv = "x_m,outer_diameter_m";
   for (const auto& [prefix, p] : domains)
     if (p)
-      for (const ProfileColumn& c : kColumns) csv << ',' << prefix << '_' << c.name;
-  csv << '\n';
+      for (const ProfileColumn& c : kColumns) csv += fmt::format(",{}_{}", prefix, c.name);
+  csv += '\n';
   const slender::StripTable& s = r.model.strips;
   for (Eigen::Index i = 0; i < s.x_m.size(); ++i) {
-    csv << fmt::format("{:.10g},{:.10g}", s.x_m(i), s.diameter_m(i));
+    csv += fmt::format("{:.10g},{:.10g}", s.x_m(i), s.diameter_m(i));
     for (const auto& [prefix, p] : domains)
       if (p)
-        for (const ProfileColumn& c : kColumns) csv << fmt::format(",{:.10g}", (p->*c.values)(i));
-    csv << '\n';
+        for (const ProfileColumn& c : kColumns) csv += fmt::format(",{:.10g}", (p->*c.values)(i));
+    csv += '\n';
   }
-  return path;
+  return {regular ? ".amplitude.csv" : ".rms.csv", std::move(csv)};
 }
 
-// Largest value along the body, FD and TD, per profile: the summary's table.
-std::vector<std::string> summary(const SlenderResults& r, bool regular) {
-  std::vector<std::string> lines;
+// What was solved: the model, its modes and the frequency domain's drag linearisation.
+std::string solution(const SlenderResults& r) {
   const slender::Modes& m = r.modes;
   std::string periods;
   for (Eigen::Index k = 0; k < std::min<Eigen::Index>(m.omega_rad_s.size(), 6); ++k)
     periods += fmt::format(" {:.4g}", 2 * std::numbers::pi / m.omega_rad_s(k));
-  lines.push_back(fmt::format("{} strips, {} shapes, {} modes; periods [s]:{}", r.model.strips.x_m.size(), r.model.phi.cols(),
-                              m.omega_rad_s.size(), periods));
-  if (r.frequency_domain) lines.push_back(fmt::format("drag linearisation: {} iterations", r.drag_iterations));
+  std::string line = fmt::format("{} strips, {} shapes, {} modes; periods [s]:{}", r.model.strips.x_m.size(), r.model.phi.cols(),
+                                 m.omega_rad_s.size(), periods);
+  if (r.frequency_domain) line += fmt::format("; drag linearised in {} iterations", r.drag_iterations);
+  return line;
+}
+
+// Largest value along the body, FD and TD, per profile: the summary's table.
+std::vector<std::string> peaks(const SlenderResults& r, bool regular) {
+  std::vector<std::string> lines;
   lines.push_back(fmt::format("largest {} along the body:  {:>12} {:>12}", regular ? "amplitude" : "RMS", "FD", "TD"));
   for (const ProfileColumn& c : kColumns) {
     const auto peak = [&](const std::optional<SlenderProfiles>& p) {
@@ -126,12 +127,20 @@ SlenderCase read_slender_case(const std::filesystem::path& path, const std::vect
 }
 
 RunReport run_slender_scene(const RunRequest& request, const ProgressCallback& progress) {
+  // Refused before the solve: the module integrates the whole record at once (no stepping state,
+  // modules/slender README "Not done"), so there is nothing to save mid-run nor to restart from.
+  if (request.checkpoint_every_s || request.restart_path)
+    throw InputError({"slender", std::nullopt, request.restart_path ? "--restart" : "--checkpoint-every",
+                      "run without it: a slender deck runs in seconds"},
+                     fmt::format("{}: the slender scene solves the whole record before it writes anything, so it neither "
+                                 "writes checkpoints nor restarts from one",
+                                 request.deck_path.string()));
   const io::ValidatedDeck deck = io::read_deck(slender_scene_schema(), request.deck_path, request.deck_settings);
   const SlenderCase c = read_slender_case(deck, request.t_max_s);
   const SlenderDeck& d = c.deck;
   const SlenderResults r = located(deck.section("slender"), [&] { return solve_slender(d, c.dt_s, c.t_max_s); });
   const std::vector<Station> stations = stations_of(r.model, d.analysis.stations_m);
-  const std::filesystem::path base = output_plan(request, deck).base;
+  WholeFile profiles = profiles_csv(r, d.sea.regular);
 
   RunReport report;
   if (r.history) {
@@ -141,6 +150,7 @@ RunReport run_slender_scene(const RunRequest& request, const ProgressCallback& p
     for (std::size_t i : picked) scene.written.push_back(all[i]);
     scene.metadata.extra = {{"scene", "slender"}};
     if (!d.sea.regular) scene.metadata.seeds = {d.sea.seed};
+    scene.whole_files.push_back(std::move(profiles));
     // The module integrates the whole record at once (it has no stepping state yet, modules/slender
     // README "Not done"); the loop replays it step by step into the writers.
     Eigen::Index step = 0;
@@ -160,9 +170,18 @@ RunReport run_slender_scene(const RunRequest& request, const ProgressCallback& p
     };
     report = run_fixed_steps(request, deck, std::move(scene), progress);
     report.coupling = "none (one body)";
+    report.results.push_back(solution(r));
+  } else {
+    // No time series: the table alone, still under the run's lock and written whole.
+    OutputSet outputs(output_plan(request, deck).base, "none", {std::move(profiles)});
+    outputs.begin({}, {});
+    outputs.finish({0.0, "completed", 0.0, {}});
+    report.outputs = outputs.paths();
+    report.warnings = outputs.notes();
+    report.time_loop = false;
+    report.coupling = "frequency domain: " + solution(r);
   }
-  report.outputs.push_back(write_profiles(base, r, d.sea.regular));
-  for (std::string& line : summary(r, d.sea.regular)) report.results.push_back(std::move(line));
+  for (std::string& line : peaks(r, d.sea.regular)) report.results.push_back(std::move(line));
   return report;
 }
 
