@@ -19,19 +19,9 @@ constexpr double kSample = 0.02;  // common output grid [s]
 
 std::vector<double> mbbt_tip(const flexbody::HubSpin& hub) {
   const beam::BeamModel model = beam::discretise(beam::benchmarks::kane_beam(), 30);
-  beam::BeamState state = beam::make_state(model);
-  beam::DynamicStepper stepper(model, beam::DynamicOptions{});
-  const double dt = 0.005;
-  const long per_sample = std::lround(kSample / dt), steps = std::lround(kEnd / dt);
-  std::vector<double> tip{0.0};
-  beam::BeamInput input;
-  for (long k = 0; k < steps; ++k) {
-    const double t = (static_cast<double>(k) + stepper.input_time_fraction()) * dt;
-    input.frame.angular_velocity_rad_s = Vec3(0.0, 0.0, hub.rate(t));
-    input.frame.angular_acceleration_rad_s2 = Vec3(0.0, 0.0, hub.acceleration(t));
-    stepper.step(input, dt, state);
-    if ((k + 1) % per_sample == 0) tip.push_back(beam::beam_outputs(model, state).tip_displacement_m.y());
-  }
+  std::vector<double> tip;
+  mbbt_spin_up(model, hub, kEnd, kSample,
+               [&](const beam::BeamState& state) { tip.push_back(beam::beam_outputs(model, state).tip_displacement_m.y()); });
   return tip;
 }
 
@@ -50,6 +40,23 @@ void require_same_grid(const std::vector<double>& a, const std::vector<double>& 
 }
 
 }  // namespace
+
+void mbbt_spin_up(const beam::BeamModel& model, const flexbody::HubSpin& hub, double end_s, double sample_s,
+                  const std::function<void(const beam::BeamState&)>& observe) {
+  beam::BeamState state = beam::make_state(model);
+  beam::DynamicStepper stepper(model, beam::DynamicOptions{});
+  const double dt = 0.005;
+  const long per_sample = std::lround(sample_s / dt), steps = std::lround(end_s / dt);
+  observe(state);
+  beam::BeamInput input;
+  for (long k = 0; k < steps; ++k) {
+    const double t = (static_cast<double>(k) + stepper.input_time_fraction()) * dt;
+    input.frame.angular_velocity_rad_s = Vec3(0.0, 0.0, hub.rate(t));
+    input.frame.angular_acceleration_rad_s2 = Vec3(0.0, 0.0, hub.acceleration(t));
+    stepper.step(input, dt, state);
+    if ((k + 1) % per_sample == 0) observe(state);
+  }
+}
 
 KaneSpinUp kane_spin_up_histories() {
   const flexbody::HubSpin hub = flexbody::kane_spin_up(6.0, beam::benchmarks::kKaneSpinUpTime);

@@ -52,20 +52,8 @@ void record(const beam::BeamModel& model, const beam::BeamState& state, flexbody
 
 flexbody::PrebentTipHistory mbbt_tips(const flexbody::PrebentBeam& b, const flexbody::HubSpin& hub) {
   const beam::BeamModel model = beam::discretise(prebent_beam(b), 30);
-  beam::BeamState state = beam::make_state(model);
-  beam::DynamicStepper stepper(model, beam::DynamicOptions{});
-  const double dt = 0.005;
-  const long per_sample = std::lround(kSample / dt), steps = std::lround(kEnd / dt);
   flexbody::PrebentTipHistory h;
-  record(model, state, h);
-  beam::BeamInput input;
-  for (long k = 0; k < steps; ++k) {
-    const double t = (static_cast<double>(k) + stepper.input_time_fraction()) * dt;
-    input.frame.angular_velocity_rad_s = Vec3(0.0, 0.0, hub.rate(t));
-    input.frame.angular_acceleration_rad_s2 = Vec3(0.0, 0.0, hub.acceleration(t));
-    stepper.step(input, dt, state);
-    if ((k + 1) % per_sample == 0) record(model, state, h);
-  }
+  mbbt_spin_up(model, hub, kEnd, kSample, [&](const beam::BeamState& state) { record(model, state, h); });
   return h;
 }
 
