@@ -4,44 +4,20 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <numbers>
 
-#include "beamdyn/beamdyn_setup.hpp"
-#include "fowtsim/beam/modal.hpp"
-#include "fowtsim/beam/solvers.hpp"
-#include "fowtsim/flexbody/blade_deck.hpp"
-#include "fowtsim/flexbody/rr_blade.hpp"
-#include "fowtsim/io/beamdyn_input.hpp"
+#include "verify/rr_blade_comparison.hpp"
 
 using namespace fowtsim;
 
-namespace {
-
-// MBBT frequencies [Hz] of the BeamDyn blade, 48 elements, clamped at the root of a frame spinning
-// at Ω about the blade's flap axis (BeamDyn x) through the rotor apex, HubRad inboard of the root
-// (BeamDyn z along the blade). Ω > 0: static equilibrium under the centrifugal load first, then
-// the eigen-analysis about it, so the stress stiffening of the stretched beam is in K.
-std::vector<double> mbbt_frequencies_hz(double omega, double hub_radius) {
-  const driver::BeamDynSetup setup = driver::beamdyn_setup(io::read_beamdyn_driver(
-      FOWTSIM_SHARED_DIR "/reference/r-test/modules/beamdyn/bd_5MW_dynamic_gravity_Az00/bd_driver.inp"));
-  const beam::BeamModel model = beam::discretise(setup.definition, 48);
-  beam::BeamInput input;
-  input.frame.angular_velocity_rad_s = Vec3(omega, 0, 0);
-  input.frame.acceleration_m_s2 = Vec3(0, 0, -omega * omega * hub_radius);  // Ω × (Ω × HubRad e_z)
-  beam::BeamState state = beam::make_state(model);
-  if (omega > 0) beam::solve_static(model, input, state);
-  return beam::natural_frequencies_hz(model, input, state, 3);
-}
-
-}  // namespace
-
 TEST_CASE("NREL 5MW blade: ElastoDyn's RR body against the MBBT beam, at rest and at 12.1 rpm", "[verification]") {
-  const flexbody::ElastoDynBlade b =
-      flexbody::read_elastodyn_blade(FOWTSIM_SOURCE_DIR "/inputs/nrel5mw/blade_elastodyn.yaml");
-  const flexbody::RrBladeMatrices rr = flexbody::rr_blade_matrices(b, flexbody::sample_blade(b));
-  const double omega = 12.1 * 2 * std::numbers::pi / 60;  // rated, 38060
-  const Eigen::Vector3d rr0 = flexbody::natural_frequencies_hz(rr), rrw = flexbody::natural_frequencies_hz(rr, omega);
-  const std::vector<double> mb0 = mbbt_frequencies_hz(0.0, b.hub_radius), mbw = mbbt_frequencies_hz(omega, b.hub_radius);
+  const driver::RrBladeComparison c = driver::rr_blade_comparison(
+      FOWTSIM_SOURCE_DIR "/inputs/nrel5mw/blade_elastodyn.yaml",
+      FOWTSIM_SHARED_DIR "/reference/r-test/modules/beamdyn/bd_5MW_dynamic_gravity_Az00/bd_driver.inp");
+  const double omega = c.omega_rad_s;
+  const Eigen::Vector3d& rr0 = c.rr_rest_hz;
+  const Eigen::Vector3d& rrw = c.rr_spinning_hz;
+  const std::vector<double>& mb0 = c.mbbt_rest_hz;
+  const std::vector<double>& mbw = c.mbbt_spinning_hz;
   REQUIRE(mb0.size() == 3);
   REQUIRE(mbw.size() == 3);
   INFO("at rest (flap 1, edge 1, flap 2) RR " << rr0.transpose() << " Hz, MBBT " << mb0[0] << " " << mb0[1] << " "

@@ -17,12 +17,12 @@
 #include <fmt/format.h>
 
 #include "run/turbulence_command.hpp"
+#include "verify/verify_cases.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "run/run_scene.hpp"
 
 namespace fowtsim::driver {
 
-std::filesystem::path source_input(const std::string& relative);  // verify_cases.cpp
 
 namespace {
 

@@ -107,8 +107,6 @@ std::filesystem::path default_shared_dir() {
 
 std::vector<std::string> benchmark_case_names() { return {"coupling", "beam", "hydro", "waves", "aero", "multibody", "turbine", "stability"}; }
 
-// A shipped input deck: inputs/<relative> under the working directory when run from the source
-// tree, else the source tree this binary was built from.
 std::filesystem::path source_input(const std::string& relative) {
   const std::filesystem::path local = std::filesystem::path("inputs") / relative;
   if (std::filesystem::exists(local)) return local;

@@ -45,4 +45,8 @@ void run_benchmark_case(const std::string& name, std::FILE* out);
 void set_shared_dir(const std::filesystem::path& dir);
 const std::filesystem::path& shared_dir();
 
+// A shipped input deck: inputs/<relative> under the working directory when run from the source
+// tree, else the source tree this binary was built from.
+std::filesystem::path source_input(const std::string& relative);
+
 }  // namespace fowtsim::driver
