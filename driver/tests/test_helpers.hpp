@@ -7,19 +7,11 @@
 #include <catch2/catch.hpp>
 
 #include "fowtsim/io/channel_table.hpp"
+#include "fowtsim/testing/exception_message.hpp"
 
 namespace fowtsim::driver {
 
-// The what() of the exception `f` throws; a test failure if it throws none.
-inline std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  FAIL("expected an exception");
-  return "";
-}
+using testing::message_of;  // fowtsim/testing/exception_message.hpp
 
 // Mean of channel `name` over the rows at t ≥ t0 [s].
 inline double mean_after(const io::ChannelTable& t, const char* name, double t0) {

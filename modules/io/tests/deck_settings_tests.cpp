@@ -10,6 +10,7 @@
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/deck.hpp"
 #include "fowtsim/io/schema.hpp"
+#include "fowtsim/testing/exception_message.hpp"
 #include "fowtsim/testing/skip.hpp"
 
 namespace {
@@ -36,15 +37,7 @@ Schema scene_schema() {
   });
 }
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  FAIL("expected an exception");
-  return "";
-}
+using fowtsim::testing::message_of;
 
 }  // namespace
 
