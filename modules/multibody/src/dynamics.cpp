@@ -55,7 +55,7 @@ GeneralisedMatrix assemble_mass(const Model& model, const State& state, const Ch
     m.noalias() += b.rotation->jacobian.transpose() * b.inertia_g * b.rotation->jacobian;
   }
   // Flexible tower: its mass with the elastic Jacobian columns.
-  if (model.flexible_tower.mode_count > 0) add_tower_mass(model, model.flexible_tower.inertia, state, k, m);
+  if (model.flexible_tower.mode_count > 0) add_flexible_body_mass(model.flexible_tower.inertia, tower_motion(model, state, k), m);
   add_added_mass(k, added_mass, m);
   return m;
 }
@@ -115,7 +115,8 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
   // the weight above, with gravity) and structural damping forces on the modal coordinates.
   const FlexibleTower& tower = model.flexible_tower;
   if (tower.mode_count > 0) {
-    const TowerDAlembert bias = tower_dalembert(model, tower.inertia, state, k, GeneralisedVector::Zero(), gravity);
+    const FlexibleBodyDAlembert bias =
+        flexible_body_dalembert(tower.inertia, tower_motion(model, state, k), GeneralisedVector::Zero(), gravity);
     f.noalias() += k.reference.jacobian.transpose() * bias.force_N + k.base.jacobian.transpose() * bias.moment_N_m;
     for (int i = 0; i < tower.mode_count; ++i) f[kTower + i] += bias.modal_N[i];
   }
@@ -230,14 +231,15 @@ Invariants invariants(const Model& model, const State& state, bool gravity) {
   }
   const FlexibleTower& tower = model.flexible_tower;
   if (tower.mode_count > 0) {
+    const FlexibleBodyMotion body = tower_motion(model, state, k);
     GeneralisedMatrix mass = GeneralisedMatrix::Zero();
-    add_tower_mass(model, tower.inertia, state, k, mass);
+    add_flexible_body_mass(tower.inertia, body, mass);
     const GeneralisedVector u = generalised_velocities(model, state);
     inv.kinetic_energy_J += 0.5 * u.dot(mass * u);
-    const TowerMomentum momentum = tower_momentum(model, tower.inertia, state, k);
+    const FlexibleBodyMomentum momentum = flexible_body_momentum(tower.inertia, body);
     inv.linear_momentum_N_s += momentum.linear_N_s;
     inv.angular_momentum_N_m_s += momentum.angular_N_m_s;
-    const Vec3 cm_moment = k.base.orientation * tower_mass_properties(model, tower.inertia, state).first_moment_kg_m;
+    const Vec3 cm_moment = k.base.orientation * flexible_body_mass_properties(tower.inertia, body).first_moment_kg_m;
     if (gravity)
       inv.potential_energy_J += model.params.gravity_m_s2 * (tower.inertia.mass_kg * k.reference.position_m.z() + cm_moment.z());
   }

@@ -227,22 +227,15 @@ void validate(const Params& p) {
   e.throw_if_any();
 }
 
-// The tower's shape integrals (TowerInertia) from quadrature points along it (x from the tower
-// base) and the yaw-bearing point mass at the top.
-TowerInertia tower_inertia(const Model& m, const FlexibleTower& t, const std::vector<flexbody::QuadraturePoint>& points,
-                           double yaw_bearing_mass_kg) {
-  TowerInertia in;
+// The tower's shape integrals from quadrature points along it (x from the tower base) and the
+// yaw-bearing point mass at the top.
+ShapeIntegrals tower_inertia(const Model& m, const FlexibleTower& t, const std::vector<flexbody::QuadraturePoint>& points,
+                             double yaw_bearing_mass_kg) {
+  ShapeIntegrals in;
   auto add = [&](double mass, double x) {
-    const Vec3 p = m.tower_base_b + Vec3(0.0, 0.0, x);
-    in.mass_kg += mass;
-    in.first_moment_kg_m += mass * p;
-    in.second_moment_kg_m2 += mass * p * p.transpose();
-    for (int j = 0; j < t.mode_count; ++j) {
-      const double phi_j = t.shape[j].value(x);
-      in.shape_mass_kg[j] += mass * phi_j;
-      in.shape_moment_kg_m[j] += mass * phi_j * p;
-      for (int i = 0; i < t.mode_count; ++i) in.shape_product_kg(i, j) += mass * phi_j * t.shape[i].value(x);
-    }
+    std::array<Vec3, kMaxBodyModes> phi{};
+    for (int j = 0; j < t.mode_count; ++j) phi[j] = t.shape[j].value(x) * t.direction_b[j];
+    in.add_point(mass, m.tower_base_b + Vec3(0.0, 0.0, x), phi, t.mode_count);
   };
   for (const flexbody::QuadraturePoint& q : points) add(q.w * q.m, q.x);
   add(yaw_bearing_mass_kg, m.tower_top_b.z() - m.tower_base_b.z());
@@ -492,12 +485,12 @@ MassSummary mass_summary(const Model& model) {
   all = combine(all, in_b(model.rotor, k.rotor.orientation, k.rotor_cm.position_m));
   if (model.flexible_tower.mode_count > 0) {
     // The tower's inertia about the reference point, moved to its CM for combine().
-    const TowerMassProperties t = tower_mass_properties(model, model.flexible_tower.inertia, s0);
+    const FlexibleBodyMassProperties t = flexible_body_mass_properties(model.flexible_tower.inertia, tower_motion(model, s0, k));
     RigidBody tower;
     tower.mass_kg = t.mass_kg;
     tower.cm_m = t.first_moment_kg_m / t.mass_kg;
     const Vec3& c = tower.cm_m;
-    tower.inertia_kg_m2 = t.inertia_ref_kg_m2 - t.mass_kg * (c.squaredNorm() * Mat3::Identity() - c * c.transpose());
+    tower.inertia_kg_m2 = t.inertia_kg_m2 - t.mass_kg * (c.squaredNorm() * Mat3::Identity() - c * c.transpose());
     all = combine(all, tower);
   }
   MassSummary s;

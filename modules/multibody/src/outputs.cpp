@@ -71,7 +71,7 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
   if (flexible.mode_count == 0) {
     add_body(model.tower.mass_kg, model.tower.inertia_kg_m2, k.tower_cm, k.base, udot, gravity, base, tower);
   } else {
-    const TowerDAlembert d = tower_dalembert(model, flexible.inertia, state, k, udot, gravity);
+    const FlexibleBodyDAlembert d = flexible_body_dalembert(flexible.inertia, tower_motion(model, state, k), udot, gravity);
     tower.head<3>() += d.force_N;
     tower.tail<3>() += d.moment_N_m + (k.reference.position_m - base).cross(d.force_N);
   }
@@ -139,7 +139,7 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
   for (int g = 0; g < model.tower_gauge_count; ++g) {
     const TowerGauge& gauge = model.tower_gauges[g];
     const Vec3 at = tower_point(model, state, k, gauge.height_m).position_m;
-    const TowerDAlembert d = tower_dalembert(model, gauge.above, state, k, udot, gravity);
+    const FlexibleBodyDAlembert d = flexible_body_dalembert(gauge.above, tower_motion(model, state, k), udot, gravity);
     Vec3 force = d.force_N + yaw.head<3>();
     Vec3 moment = d.moment_N_m + (k.reference.position_m - at).cross(d.force_N) + yaw.tail<3>() +
                   (top - at).cross(yaw.head<3>());

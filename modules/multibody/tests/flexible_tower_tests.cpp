@@ -547,14 +547,14 @@ TEST_CASE("the tower's shape integrals equal Kane's sums over its mass points", 
     moment += (q.position_m - k.reference.position_m).cross(f);
   }
   GeneralisedMatrix mass = GeneralisedMatrix::Zero();
-  add_tower_mass(m, m.flexible_tower.inertia, s, k, mass);
-  const TowerDAlembert bias = tower_dalembert(m, m.flexible_tower.inertia, s, k, GeneralisedVector::Zero(), g);
+  add_flexible_body_mass(m.flexible_tower.inertia, tower_motion(m, s, k), mass);
+  const FlexibleBodyDAlembert bias = flexible_body_dalembert(m.flexible_tower.inertia, tower_motion(m, s, k), GeneralisedVector::Zero(), g);
   GeneralisedVector f = k.reference.jacobian.transpose() * bias.force_N + k.base.jacobian.transpose() * bias.moment_N_m;
   for (int j = 0; j < 4; ++j) f[kTower + j] += bias.modal_N[j];
   // 1e-12 relative: ~80 terms summed in two orders (measured ≈ 1e-15).
   CHECK((mass - lumped_mass).norm() < 1e-12 * lumped_mass.norm());
   CHECK((f - lumped_force).norm() < 1e-12 * lumped_force.norm());
-  const TowerDAlembert full = tower_dalembert(m, m.flexible_tower.inertia, s, k, udot, g);
+  const FlexibleBodyDAlembert full = flexible_body_dalembert(m.flexible_tower.inertia, tower_motion(m, s, k), udot, g);
   CHECK((full.force_N - force).norm() < 1e-12 * force.norm());
   CHECK((full.moment_N_m - moment).norm() < 1e-12 * moment.norm());
 }

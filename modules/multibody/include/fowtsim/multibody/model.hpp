@@ -20,9 +20,12 @@ namespace fowtsim::multibody {
 
 inline constexpr int kMaxBlades = 3;
 inline constexpr int kMaxTowerModes = 4;  // fore-aft + side-side tower bending modes (2 + 2, ElastoDyn)
-static_assert(kMaxTowerModes == 4, "TowerInertia::shape_moment_kg_m zeroes four vectors");
-// surge, sway, heave, 3 rotations, rotor azimuth, generator azimuth, then the tower modes
-inline constexpr int kMaxDofs = 8 + kMaxTowerModes;
+inline constexpr int kMaxBladeModes = 3;  // Rayleigh–Ritz blade: flap 1, flap 2, edge 1 (ElastoDyn)
+inline constexpr int kMaxBodyModes = 4;   // shape functions of one flexible body (tower or blade)
+static_assert(kMaxTowerModes <= kMaxBodyModes && kMaxBladeModes <= kMaxBodyModes);
+// surge, sway, heave, 3 rotations, rotor azimuth, generator azimuth, the tower modes, then each
+// blade's modes
+inline constexpr int kMaxDofs = 8 + kMaxTowerModes + kMaxBlades * kMaxBladeModes;
 
 // Mass properties of one rigid body in its own frame.
 struct RigidBody {
@@ -33,23 +36,42 @@ struct RigidBody {
 
 // Generalised-velocity indices (u = [v_ref; ω_b; ψ̇; θ̇_g]).
 // With a flexible tower the tower modes follow at kTower … kTower + tower modes − 1 (fore-aft
-// first), and the generator row stays in place (an identity row with a rigid shaft).
-enum Dof : int { kSurge = 0, kSway, kHeave, kRoll, kPitch, kYaw, kRotor, kGenerator, kTower };
+// first), and the generator row stays in place (an identity row with a rigid shaft). Rayleigh–Ritz
+// blade b's modes are at kBlade + b·kMaxBladeModes + j.
+enum Dof : int { kSurge = 0, kSway, kHeave, kRoll, kPitch, kYaw, kRotor, kGenerator, kTower,
+                 kBlade = kTower + kMaxTowerModes };
 
-// The mass of (a part of) the flexible tower as shape integrals, so that its inertia costs the same
-// whatever the mass distribution (seed 002 Sec. 2, eq. 2, and App. A: a flexible body's mass matrix
-// from ∫m, ∫m p, ∫m p pᵀ, ∫m φ, ∫m φ p, ∫m φ φ). A point of the tower at p (undeflected, in b
-// from the reference point) moves to ρ = p + Σ_j q_j φ_j d_j, d_j = direction_b[j]; each integral
-// runs over the tower's line mass (and the yaw-bearing point mass at the top) above a height.
-struct TowerInertia {
+// The mass of a flexible body (or a part of it) as shape integrals, so that its inertia costs the
+// same whatever the mass distribution (seed 002 Sec. 2, eq. 2, and App. A: a flexible body's mass
+// matrix from ∫m, ∫m p, ∫m p pᵀ, ∫m φ_j, ∫m φ_j pᵀ, ∫m φ_i φ_jᵀ — Wallrapp's "standard input
+// data"). A point of the body at p (undeflected, in the body frame from its origin) moves to
+// ρ = p + Σ_j q_j φ_j(p), φ_j a vector shape in the body frame.
+struct ShapeIntegrals {
   double mass_kg = 0.0;                                   // ∫ m [kg]
   Vec3 first_moment_kg_m = Vec3::Zero();                  // ∫ m p [kg·m]
   Mat3 second_moment_kg_m2 = Mat3::Zero();                // ∫ m p pᵀ [kg·m²]
-  std::array<double, kMaxTowerModes> shape_mass_kg{};     // c_j = ∫ m φ_j [kg]
-  // e_j = ∫ m φ_j p [kg·m] (Eigen vectors are not zeroed by {}: one Zero() per mode)
-  std::array<Vec3, kMaxTowerModes> shape_moment_kg_m = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-  Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes> shape_product_kg =
-      Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes>::Zero();  // S_ij = ∫ m φ_i φ_j [kg]
+  std::array<Vec3, kMaxBodyModes> shape_mass_kg;          // c_j = ∫ m φ_j [kg]
+  std::array<Mat3, kMaxBodyModes> shape_moment_kg_m;      // E_j = ∫ m φ_j pᵀ [kg·m]
+  std::array<std::array<Mat3, kMaxBodyModes>, kMaxBodyModes> shape_product_kg;  // G_ij = ∫ m φ_i φ_jᵀ [kg]
+
+  ShapeIntegrals() {  // Eigen members are not zeroed by {}
+    for (int i = 0; i < kMaxBodyModes; ++i) {
+      shape_mass_kg[i].setZero();
+      shape_moment_kg_m[i].setZero();
+      for (auto& g : shape_product_kg[i]) g.setZero();
+    }
+  }
+  // Adds a point mass m at p with the shapes' values φ_0 … φ_{n−1} there.
+  void add_point(double m, const Vec3& p, const std::array<Vec3, kMaxBodyModes>& phi, int n) {
+    mass_kg += m;
+    first_moment_kg_m += m * p;
+    second_moment_kg_m2 += m * p * p.transpose();
+    for (int j = 0; j < n; ++j) {
+      shape_mass_kg[j] += m * phi[j];
+      shape_moment_kg_m[j] += m * phi[j] * p.transpose();
+      for (int i = 0; i < n; ++i) shape_product_kg[i][j] += m * phi[i] * phi[j].transpose();
+    }
+  }
 };
 
 // A tower mode's shape as ElastoDyn gives it, φ(h) = Σ_{k=2..6} c_k (h/L)^k (normalised to φ(L) = 1),
@@ -63,11 +85,11 @@ struct TowerModeShape {
 
 // A tower gauge (ElastoDyn's TwHt{k} outputs): its height and the mass above it (tower line mass
 // from the gauge up and the yaw-bearing mass) as shape integrals, in the tower's coordinates (p from
-// the reference point, φ_j at the tower's own heights), so tower_dalembert() gives its d'Alembert load.
+// the reference point, φ_j at the tower's own heights), so flexible_body_dalembert() gives its d'Alembert load.
 inline constexpr int kMaxTowerGauges = 9;  // ElastoDyn's NTwGages ≤ 9
 struct TowerGauge {
   double height_m = 0.0;                  // above the tower base, undeflected axis [m]
-  TowerInertia above;                     // the tower mass above the gauge
+  ShapeIntegrals above;                   // the tower mass above the gauge
 };
 
 // The flexible tower's Rayleigh–Ritz model (flexbody integrals), built by make_model().
@@ -78,7 +100,7 @@ struct FlexibleTower {
   std::array<TowerModeShape, kMaxTowerModes> shape{};    // φ_j
   std::array<double, kMaxTowerModes> top_shape{};        // φ_j(H) [-] (= 1)
   std::array<double, kMaxTowerModes> top_slope{};        // φ_j'(H) [1/m]
-  TowerInertia inertia;                                  // the whole tower + yaw-bearing mass
+  ShapeIntegrals inertia;                                  // the whole tower + yaw-bearing mass
   Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes> stiffness =
       Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes>::Zero();      // K_q [N/m]
   Eigen::Matrix<double, kMaxTowerModes, kMaxTowerModes> geometric_stiffness_per_g =
