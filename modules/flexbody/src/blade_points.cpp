@@ -4,6 +4,7 @@
 #include "fowtsim/core/interpolation.hpp"
 
 #include <numbers>
+#include <string>
 
 namespace fowtsim::flexbody {
 namespace {
@@ -42,6 +43,15 @@ std::vector<BladePoint> blade_points(const ElastoDynBlade& b, const BladeRule& r
   if (rule.kind == BladeRule::Kind::Gauss) {
     // Gauss points lie strictly inside the station intervals, where every property is linear.
     for (const QuadraturePoint& q : quadrature_points(stations, rule.gauss)) out.push_back(point_at(b, stations.x, q.x, q.w));
+    return out;
+  }
+  if (rule.kind == BladeRule::Kind::Spans) {
+    for (const double x : rule.spans) {
+      if (!(x >= 0.0 && x <= b.length()))
+        throw InputError({"flexbody.blade", std::nullopt, "span", "0 … the blade length"},
+                         "a blade span of " + std::to_string(x) + " m lies outside the blade (0 … " + std::to_string(b.length()) + " m)");
+      out.push_back(point_at(b, stations.x, x, 0.0));
+    }
     return out;
   }
   if (rule.elastodyn_nodes < 1)

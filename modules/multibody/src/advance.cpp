@@ -8,13 +8,15 @@
 namespace fowtsim::multibody {
 namespace {
 
-// y = [r (3), quaternion w x y z (4), ψ, θ_g, v (3), ω_b (3), ψ̇, θ̇_g, tower q (4), q̇ (4)] —
-// 25 numbers (the tower entries stay zero with a rigid tower).
-constexpr int kStateSize = 17 + 2 * kMaxTowerModes;
-using Vector17 = Eigen::Matrix<double, kStateSize, 1>;
+// y = [r (3), quaternion w x y z (4), ψ, θ_g, v (3), ω_b (3), ψ̇, θ̇_g, tower q (4), q̇ (4),
+// blade q (3 × 3), q̇ (3 × 3)] — 43 numbers (the flexible entries stay zero when rigid).
+constexpr int kBladeCoordinates = kMaxBlades * kMaxBladeModes;
+constexpr int kTowerAt = 17, kBladeAt = kTowerAt + 2 * kMaxTowerModes;
+constexpr int kStateSize = kBladeAt + 2 * kBladeCoordinates;
+using StateVector = Eigen::Matrix<double, kStateSize, 1>;
 
-Vector17 pack(const State& s) {
-  Vector17 y;
+StateVector pack(const State& s) {
+  StateVector y;
   y.segment<3>(0) = s.position_m;
   y.segment<4>(3) << s.orientation.w(), s.orientation.x(), s.orientation.y(), s.orientation.z();
   y[7] = s.rotor_azimuth_rad;
@@ -24,13 +26,18 @@ Vector17 pack(const State& s) {
   y[15] = s.rotor_speed_rad_s;
   y[16] = s.generator_speed_rad_s;
   for (int j = 0; j < kMaxTowerModes; ++j) {
-    y[17 + j] = s.tower_deflection_m[j];
-    y[17 + kMaxTowerModes + j] = s.tower_deflection_rate_m_s[j];
+    y[kTowerAt + j] = s.tower_deflection_m[j];
+    y[kTowerAt + kMaxTowerModes + j] = s.tower_deflection_rate_m_s[j];
   }
+  for (int b = 0; b < kMaxBlades; ++b)
+    for (int j = 0; j < kMaxBladeModes; ++j) {
+      y[kBladeAt + b * kMaxBladeModes + j] = s.blade_deflection_m[b][j];
+      y[kBladeAt + kBladeCoordinates + b * kMaxBladeModes + j] = s.blade_deflection_rate_m_s[b][j];
+    }
   return y;
 }
 
-void unpack(const Vector17& y, State& s) {
+void unpack(const StateVector& y, State& s) {
   s.position_m = y.segment<3>(0);
   s.orientation = Eigen::Quaterniond(y[3], y[4], y[5], y[6]);
   s.rotor_azimuth_rad = y[7];
@@ -40,9 +47,14 @@ void unpack(const Vector17& y, State& s) {
   s.rotor_speed_rad_s = y[15];
   s.generator_speed_rad_s = y[16];
   for (int j = 0; j < kMaxTowerModes; ++j) {
-    s.tower_deflection_m[j] = y[17 + j];
-    s.tower_deflection_rate_m_s[j] = y[17 + kMaxTowerModes + j];
+    s.tower_deflection_m[j] = y[kTowerAt + j];
+    s.tower_deflection_rate_m_s[j] = y[kTowerAt + kMaxTowerModes + j];
   }
+  for (int b = 0; b < kMaxBlades; ++b)
+    for (int j = 0; j < kMaxBladeModes; ++j) {
+      s.blade_deflection_m[b][j] = y[kBladeAt + b * kMaxBladeModes + j];
+      s.blade_deflection_rate_m_s[b][j] = y[kBladeAt + kBladeCoordinates + b * kMaxBladeModes + j];
+    }
 }
 
 void set_yaw(const Model& model, LoadProvider& provider, double t, State& s) {
@@ -64,7 +76,7 @@ void set_spin(const Model& model, LoadProvider& provider, double t, State& s) {
 }
 
 // ẏ at (t, y). `scratch` carries the non-integrated parts (yaw) and receives the stage state.
-Vector17 derivative(const Model& model, LoadProvider& provider, double t, const Vector17& y,
+StateVector derivative(const Model& model, LoadProvider& provider, double t, const StateVector& y,
                     State& scratch, Evaluation& eval) {
   unpack(y, scratch);
   scratch.orientation.normalize();
@@ -74,7 +86,7 @@ Vector17 derivative(const Model& model, LoadProvider& provider, double t, const 
   provider.loads(t, scratch, loads);
   evaluate(model, scratch, loads, t, eval);
 
-  Vector17 d;
+  StateVector d;
   d.segment<3>(0) = scratch.velocity_m_s;
   // q̇ = ½ q ⊗ (0, ω_b): ω_b is resolved in the body frame.
   const Eigen::Quaterniond& q = scratch.orientation;
@@ -85,11 +97,16 @@ Vector17 derivative(const Model& model, LoadProvider& provider, double t, const 
   d.segment<3>(9) = eval.acceleration.segment<3>(kSurge);
   d.segment<3>(12) = eval.acceleration.segment<3>(kRoll);
   d[15] = eval.acceleration[kRotor];
-  d.tail<2 * kMaxTowerModes>().setZero();
+  d.tail<kStateSize - kTowerAt>().setZero();
   for (int j = 0; j < model.flexible_tower.mode_count; ++j) {
-    d[17 + j] = scratch.tower_deflection_rate_m_s[j];
-    d[17 + kMaxTowerModes + j] = eval.acceleration[kTower + j];
+    d[kTowerAt + j] = scratch.tower_deflection_rate_m_s[j];
+    d[kTowerAt + kMaxTowerModes + j] = eval.acceleration[kTower + j];
   }
+  for (int b = 0; b < model.blade_count && model.rr_blades.mode_count > 0; ++b)
+    for (int j = 0; j < kMaxBladeModes; ++j) {
+      d[kBladeAt + b * kMaxBladeModes + j] = scratch.blade_deflection_rate_m_s[b][j];
+      d[kBladeAt + kBladeCoordinates + b * kMaxBladeModes + j] = eval.acceleration[kBlade + b * kMaxBladeModes + j];
+    }
   if (model.generator_dof == kGenerator) {
     d[8] = scratch.generator_speed_rad_s;
     d[16] = eval.acceleration[kGenerator];
@@ -110,13 +127,13 @@ void Multibody::advance(const Model& model, LoadProvider& provider, double t, do
   const double h = dt / substeps;
   State scratch = state;
   Evaluation eval;
-  Vector17 y = pack(state);
+  StateVector y = pack(state);
   for (int i = 0; i < substeps; ++i) {
     const double ti = t + i * h;
-    const Vector17 k1 = derivative(model, provider, ti, y, scratch, eval);
-    const Vector17 k2 = derivative(model, provider, ti + 0.5 * h, y + 0.5 * h * k1, scratch, eval);
-    const Vector17 k3 = derivative(model, provider, ti + 0.5 * h, y + 0.5 * h * k2, scratch, eval);
-    const Vector17 k4 = derivative(model, provider, ti + h, y + h * k3, scratch, eval);
+    const StateVector k1 = derivative(model, provider, ti, y, scratch, eval);
+    const StateVector k2 = derivative(model, provider, ti + 0.5 * h, y + 0.5 * h * k1, scratch, eval);
+    const StateVector k3 = derivative(model, provider, ti + 0.5 * h, y + 0.5 * h * k2, scratch, eval);
+    const StateVector k4 = derivative(model, provider, ti + h, y + h * k3, scratch, eval);
     y += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
     y.segment<4>(3).normalize();
     for (int j = 0; j < kStateSize; ++j) {

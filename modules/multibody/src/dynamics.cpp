@@ -9,6 +9,7 @@
 
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/rotation.hpp"
+#include "fowtsim/multibody/blade_body.hpp"
 #include "fowtsim/multibody/tower_body.hpp"
 
 namespace fowtsim::multibody {
@@ -56,6 +57,8 @@ GeneralisedMatrix assemble_mass(const Model& model, const State& state, const Ch
   }
   // Flexible tower: its mass with the elastic Jacobian columns.
   if (model.flexible_tower.mode_count > 0) add_flexible_body_mass(model.flexible_tower.inertia, tower_motion(model, state, k), m);
+  for (int b = 0; b < model.blade_count && model.rr_blades.mode_count > 0; ++b)
+    add_flexible_body_mass(model.rr_blades.inertia, blade_motion(model, state, k, b), m);
   add_added_mass(k, added_mass, m);
   return m;
 }
@@ -130,6 +133,26 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
     f[kTower + i] -= elastic;
   }
 
+  // Rayleigh–Ritz blades: weight and velocity-product inertia (the spin's in-plane softening
+  // included, through ω × (ω × ρ)); elastic K, centrifugal stiffening Ω² G (seed 002 eq. 26: linear
+  // shapes carry no radial shortening, so the axial load's work must be added) and damping; the
+  // station loads through the deflected stations.
+  const RayleighRitzBlades& rr = model.rr_blades;
+  for (int b = 0; b < model.blade_count && rr.mode_count > 0; ++b) {
+    const FlexibleBodyMotion body = blade_motion(model, state, k, b);
+    const FlexibleBodyDAlembert bias = flexible_body_dalembert(rr.inertia, body, GeneralisedVector::Zero(), gravity);
+    f.noalias() += body.origin->jacobian.transpose() * bias.force_N + k.rotor.jacobian.transpose() * bias.moment_N_m;
+    const double spin2 = state.rotor_speed_rad_s * state.rotor_speed_rad_s;
+    const Eigen::Map<const Vec3> q(state.blade_deflection_m[b].data()), qd(state.blade_deflection_rate_m_s[b].data());
+    const Vec3 elastic = (rr.stiffness + spin2 * rr.centrifugal_stiffness) * q + rr.damping * qd;
+    for (int j = 0; j < rr.mode_count; ++j) f[body.first_dof + j] += bias.modal_N[j] - elastic[j];
+    for (int s = 0; s < loads.blade_station_load_count; ++s) {
+      const BladeStationLoad& load = loads.blade_station_loads[b][s];
+      f.noalias() += blade_station_point(model, state, k, b, s).jacobian.transpose() * load.force_N +
+                     blade_section_rotation_jacobian(model, k, b, s).transpose() * load.moment_N_m;
+    }
+  }
+
   // Added mass: its bias part −Pᵀ A [a_r,bias; α_bias] vanishes because a_r = v̇ and α = T_gb ω̇_b
   // have no velocity-product terms in these generalised speeds.
 
@@ -187,7 +210,7 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
     f[i] = a;
   }
   // The rigid-tower model solves its 8 × 8 block with the same fixed-size Cholesky as before the
-  // tower DOFs existed (bit-identical results); the flexible one the whole matrix.
+  // tower DOFs existed (bit-identical results); a flexible tower or blades the whole matrix.
   auto solve = [&](const auto& block, const auto& rhs) {
     const Eigen::LLT<std::remove_cvref_t<decltype(block)>> llt(block);
     if (llt.info() != Eigen::Success) {
@@ -197,7 +220,7 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
     }
     return llt.solve(rhs).eval();
   };
-  if (model.flexible_tower.mode_count == 0) {
+  if (model.flexible_tower.mode_count == 0 && rr.mode_count == 0) {
     const Eigen::Matrix<double, kTower, kTower> rigid = m.topLeftCorner<kTower, kTower>();
     const Eigen::Matrix<double, kTower, 1> rigid_f = f.head<kTower>();
     out.acceleration.setZero();
@@ -229,19 +252,26 @@ Invariants invariants(const Model& model, const State& state, bool gravity) {
     inv.angular_momentum_N_m_s += b.cm->position_m.cross(b.mass * v) + b.inertia_g * w;
     if (gravity) inv.potential_energy_J += b.mass * model.params.gravity_m_s2 * b.cm->position_m.z();
   }
-  const FlexibleTower& tower = model.flexible_tower;
-  if (tower.mode_count > 0) {
-    const FlexibleBodyMotion body = tower_motion(model, state, k);
+  // Flexible bodies: kinetic energy ½ uᵀ M_body u, momenta, weight.
+  const GeneralisedVector u = generalised_velocities(model, state);
+  auto add_flexible = [&](const ShapeIntegrals& in, const FlexibleBodyMotion& body) {
     GeneralisedMatrix mass = GeneralisedMatrix::Zero();
-    add_flexible_body_mass(tower.inertia, body, mass);
-    const GeneralisedVector u = generalised_velocities(model, state);
+    add_flexible_body_mass(in, body, mass);
     inv.kinetic_energy_J += 0.5 * u.dot(mass * u);
-    const FlexibleBodyMomentum momentum = flexible_body_momentum(tower.inertia, body);
+    const FlexibleBodyMomentum momentum = flexible_body_momentum(in, body);
     inv.linear_momentum_N_s += momentum.linear_N_s;
     inv.angular_momentum_N_m_s += momentum.angular_N_m_s;
-    const Vec3 cm_moment = k.base.orientation * flexible_body_mass_properties(tower.inertia, body).first_moment_kg_m;
-    if (gravity)
-      inv.potential_energy_J += model.params.gravity_m_s2 * (tower.inertia.mass_kg * k.reference.position_m.z() + cm_moment.z());
+    const Vec3 cm_moment = body.orientation * flexible_body_mass_properties(in, body).first_moment_kg_m;
+    if (gravity) inv.potential_energy_J += model.params.gravity_m_s2 * (in.mass_kg * body.origin->position_m.z() + cm_moment.z());
+  };
+  const FlexibleTower& tower = model.flexible_tower;
+  if (tower.mode_count > 0) add_flexible(tower.inertia, tower_motion(model, state, k));
+  const RayleighRitzBlades& rr = model.rr_blades;
+  for (int b = 0; b < model.blade_count && rr.mode_count > 0; ++b) {
+    add_flexible(rr.inertia, blade_motion(model, state, k, b));
+    // Strain energy of K only: Ω² G depends on the speed and has no potential.
+    const Eigen::Map<const Vec3> q(state.blade_deflection_m[b].data());
+    inv.potential_energy_J += 0.5 * q.dot(rr.stiffness * q);
   }
   for (int i = 0; i < tower.mode_count; ++i)
     for (int j = 0; j < tower.mode_count; ++j)

@@ -38,6 +38,8 @@ GeneralisedVector generalised_velocities(const Model& model, const State& state)
   u[kRotor] = state.rotor_speed_rad_s;
   if (model.generator_dof == kGenerator) u[kGenerator] = state.generator_speed_rad_s;
   for (int j = 0; j < model.flexible_tower.mode_count; ++j) u[kTower + j] = state.tower_deflection_rate_m_s[j];
+  for (int b = 0; b < model.blade_count && model.rr_blades.mode_count > 0; ++b)
+    for (int j = 0; j < kMaxBladeModes; ++j) u[kBlade + b * kMaxBladeModes + j] = state.blade_deflection_rate_m_s[b][j];
   return u;
 }
 
@@ -132,6 +134,7 @@ void chain_kinematics(const Model& model, const State& state, ChainKinematics& o
   for (int i = 0; i < model.blade_count; ++i) {
     out.blade_root[i] = point_on(out.apex, out.rotor, apex + t_gh * model.blade_root_h[i]);
     out.blade_root_orientation[i] = t_gh * model.blade_root_orientation_h[i];
+    out.blade_frame_orientation[i] = out.blade_root_orientation[i] * rotation_z(-state.blade_pitch_rad[i]);
   }
 }
 

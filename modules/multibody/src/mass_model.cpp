@@ -10,12 +10,15 @@
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/rotation.hpp"
 #include "fowtsim/flexbody/axial_force.hpp"
+#include "fowtsim/flexbody/blade_shapes.hpp"
+#include "fowtsim/flexbody/rr_blade.hpp"
 #include "fowtsim/flexbody/integrals.hpp"
 #include "fowtsim/flexbody/quadrature.hpp"
 #include "fowtsim/flexbody/shape_functions.hpp"
 #include "fowtsim/flexbody/station_segment.hpp"
 #include "fowtsim/multibody/dynamics.hpp"
 #include "fowtsim/multibody/model.hpp"
+#include "fowtsim/multibody/blade_body.hpp"
 #include "fowtsim/multibody/tower_body.hpp"
 
 namespace fowtsim::multibody {
@@ -201,6 +204,23 @@ void validate(const Params& p) {
                 r.blade_mass_kg * r.blade_second_mass_moment_kg_m2 * (1.0 + 1e-12),
             "rotor.blade_first_mass_moment_kg_m", r.blade_first_mass_moment_kg_m,
             "first² <= mass · second moment (a real mass distribution)");
+  if (r.rayleigh_ritz_blade) {
+    const flexbody::ElastoDynBlade& b = *r.rayleigh_ritz_blade;
+    e.require(!r.flexible_blades, "rotor.rayleigh_ritz_blade", 1.0, "not with flexible_blades (one blade model)");
+    e.require(std::abs(b.hub_radius - r.hub_radius_m) <= 1e-9 * r.tip_radius_m, "rotor.rayleigh_ritz_blade.hub_radius_m",
+              b.hub_radius, "= rotor.hub_radius_m (" + std::to_string(r.hub_radius_m) + ")");
+    e.require(std::abs(b.tip_radius - r.tip_radius_m) <= 1e-9 * r.tip_radius_m, "rotor.rayleigh_ritz_blade.tip_radius_m",
+              b.tip_radius, "= rotor.tip_radius_m (" + std::to_string(r.tip_radius_m) + ")");
+    e.require(r.rayleigh_ritz_blade_nodes >= 1, "rotor.rayleigh_ritz_blade_nodes", r.rayleigh_ritz_blade_nodes, ">= 1");
+    e.require(r.blade_station_spans_m.size() < static_cast<std::size_t>(kMaxBladeStations), "rotor.blade_station_spans_m",
+              static_cast<double>(r.blade_station_spans_m.size()), "fewer than " + std::to_string(kMaxBladeStations) + " stations");
+    const double length = r.tip_radius_m - r.hub_radius_m;
+    for (std::size_t i = 0; i < r.blade_station_spans_m.size(); ++i) {
+      const double x = r.blade_station_spans_m[i];
+      e.require(x >= 0.0 && x <= length && (i == 0 || x >= r.blade_station_spans_m[i - 1]),
+                "rotor.blade_station_spans_m[" + std::to_string(i) + "]", x, "ascending within 0 … the blade length");
+    }
+  }
   // Drivetrain
   const auto& d = p.drivetrain;
   e.require(std::isfinite(d.gearbox_ratio) && d.gearbox_ratio > 0.0, "drivetrain.gearbox_ratio", d.gearbox_ratio, "> 0");
@@ -333,6 +353,47 @@ FlexibleTower make_flexible_tower(const Params& p, const Model& m, double top_ma
   return t;
 }
 
+// The Rayleigh–Ritz blades: ElastoDyn's twisted shapes on its own midpoint rule (BldNodes; so the
+// mass moments equal its summary file's), K with its tuners, the centrifugal G per Ω² and its
+// damping (flexbody/rr_blade.hpp); the shapes again at the stations where loads act.
+RayleighRitzBlades make_rr_blades(const RotorParams& r) {
+  using namespace fowtsim::flexbody;
+  const ElastoDynBlade& blade = *r.rayleigh_ritz_blade;
+  RayleighRitzBlades out;
+  out.mode_count = kBladeShapes;
+  out.length_m = blade.length();
+  BladeRule rule;
+  rule.kind = BladeRule::Kind::ElastoDynNodes;
+  rule.elastodyn_nodes = r.rayleigh_ritz_blade_nodes;
+  const SampledBlade sampled = sample_blade(blade, rule);
+  auto shape_at = [](const SampledBlade& s, Eigen::Index k, const Eigen::MatrixXd& flap, const Eigen::MatrixXd& edge) {
+    std::array<Vec3, kMaxBodyModes> phi{};
+    for (int j = 0; j < kBladeShapes; ++j) phi[j] = Vec3(flap(k, j), edge(k, j), 0.0);
+    return phi;
+  };
+  for (std::size_t k = 0; k < sampled.points.size(); ++k) {
+    const BladePoint& p = sampled.points[k];
+    const auto i = static_cast<Eigen::Index>(k);
+    out.inertia.add_point(p.w * p.m, Vec3(0.0, 0.0, p.x), shape_at(sampled, i, sampled.u_flap, sampled.u_edge), kBladeShapes);
+  }
+  const RrBladeMatrices matrices = rr_blade_matrices(blade, sampled);
+  out.stiffness = matrices.stiffness;
+  out.centrifugal_stiffness = matrices.centrifugal;
+  out.damping = elastodyn_damping(blade, matrices);
+  BladeRule at;
+  at.kind = BladeRule::Kind::Spans;
+  at.spans = r.blade_station_spans_m;
+  at.spans.push_back(blade.length());
+  const SampledBlade stations = sample_blade(blade, at);
+  out.station_count = static_cast<int>(at.spans.size());
+  for (int k = 0; k < out.station_count; ++k) {
+    out.stations[k].span_m = at.spans[static_cast<std::size_t>(k)];
+    out.stations[k].shape = shape_at(stations, k, stations.u_flap, stations.u_edge);
+    out.stations[k].slope = shape_at(stations, k, stations.nu_flap, stations.nu_edge);
+  }
+  return out;
+}
+
 }  // namespace
 
 BladeMassMoments blade_mass_moments(const std::vector<double>& span_fraction,
@@ -400,7 +461,7 @@ Model make_model(const Params& params) {
     m.blade_root_orientation_h[i] = rotation_x(azimuth) * rotation_y(cone);
     const Vec3 axis = m.blade_root_orientation_h[i].col(2);
     m.blade_root_h[i] = p.rotor.hub_radius_m * axis;
-    if (!p.rotor.flexible_blades && p.rotor.blade_mass_kg > 0.0) {
+    if (!p.rotor.flexible_blades && !p.rotor.rayleigh_ritz_blade && p.rotor.blade_mass_kg > 0.0) {
       const double hr = p.rotor.hub_radius_m;
       const double mass = p.rotor.blade_mass_kg;
       const double s1 = p.rotor.blade_first_mass_moment_kg_m + hr * mass;  // about the apex
@@ -420,14 +481,17 @@ Model make_model(const Params& params) {
   m.generator_inertia_kg_m2 = p.drivetrain.generator_inertia_kg_m2;
   m.dof_count = p.drivetrain.torsional_flexibility ? 8 : 7;
   m.generator_dof = p.drivetrain.torsional_flexibility ? kGenerator : kRotor;
+  if (p.rotor.rayleigh_ritz_blade) m.rr_blades = make_rr_blades(p.rotor);
   if (p.tower.flexible) {
     // The tower's mass leaves the base body for the stations; the mass above the tower (nacelle,
     // rotor, yaw bearing; ElastoDyn's TwrTpMass) compresses it (geometric stiffness).
-    const double top_mass = m.nacelle.mass_kg + m.rotor.mass_kg + p.nacelle.yaw_bearing_mass_kg;
+    const double top_mass = m.nacelle.mass_kg + m.rotor.mass_kg + m.blade_count * m.rr_blades.inertia.mass_kg +
+                            p.nacelle.yaw_bearing_mass_kg;
     m.flexible_tower = make_flexible_tower(p, m, top_mass);
     m.base = platform;
     m.dof_count = kTower + m.flexible_tower.mode_count;
   }
+  if (m.rr_blades.mode_count > 0) m.dof_count = kBlade + m.blade_count * kMaxBladeModes;
   make_tower_gauges(p, m);
 
   for (int i = 0; i < 6; ++i) m.acceleration_given[i] = !p.dofs.platform_free[i];
@@ -453,7 +517,10 @@ Model make_model(const Params& params) {
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(mass.topLeftCorner(m.dof_count, m.dof_count));
   if (!(eig.eigenvalues().minCoeff() > 1e-12 * scale)) {
     static const char* names[] = {"surge", "sway", "heave", "roll", "pitch", "yaw", "rotor azimuth",
-                                  "generator azimuth", "tower mode 1", "tower mode 2", "tower mode 3", "tower mode 4"};
+                                  "generator azimuth", "tower mode 1", "tower mode 2", "tower mode 3", "tower mode 4",
+                                  "blade 1 flap 1", "blade 1 flap 2", "blade 1 edge 1", "blade 2 flap 1", "blade 2 flap 2",
+                                  "blade 2 edge 1", "blade 3 flap 1", "blade 3 flap 2", "blade 3 edge 1"};
+    static_assert(sizeof(names) / sizeof(names[0]) == kMaxDofs);
     std::string which;
     for (int i = 0; i < m.dof_count; ++i) {
       if (diag[i] <= 1e-12 * scale) which += std::string(which.empty() ? "" : ", ") + names[i];
@@ -483,16 +550,20 @@ MassSummary mass_summary(const Model& model) {
   RigidBody all = in_b(model.base, k.base.orientation, k.base_cm.position_m);
   all = combine(all, in_b(model.nacelle, k.nacelle.orientation, k.nacelle_cm.position_m));
   all = combine(all, in_b(model.rotor, k.rotor.orientation, k.rotor_cm.position_m));
-  if (model.flexible_tower.mode_count > 0) {
-    // The tower's inertia about the reference point, moved to its CM for combine().
-    const FlexibleBodyMassProperties t = flexible_body_mass_properties(model.flexible_tower.inertia, tower_motion(model, s0, k));
-    RigidBody tower;
-    tower.mass_kg = t.mass_kg;
-    tower.cm_m = t.first_moment_kg_m / t.mass_kg;
-    const Vec3& c = tower.cm_m;
-    tower.inertia_kg_m2 = t.inertia_kg_m2 - t.mass_kg * (c.squaredNorm() * Mat3::Identity() - c * c.transpose());
-    all = combine(all, tower);
-  }
+  auto add_flexible = [&](const ShapeIntegrals& in, const FlexibleBodyMotion& body) {
+    // Its inertia about O, moved to its CM for combine(), in b.
+    const FlexibleBodyMassProperties f = flexible_body_mass_properties(in, body);
+    const Mat3 t_bk = t_gb.transpose() * body.orientation;
+    const Vec3 c = f.first_moment_kg_m / f.mass_kg;  // CM from O in k
+    RigidBody x;
+    x.mass_kg = f.mass_kg;
+    x.cm_m = t_gb.transpose() * (body.origin->position_m - k.reference.position_m) + t_bk * c;
+    x.inertia_kg_m2 = t_bk * (f.inertia_kg_m2 - f.mass_kg * (c.squaredNorm() * Mat3::Identity() - c * c.transpose())) * t_bk.transpose();
+    all = combine(all, x);
+  };
+  if (model.flexible_tower.mode_count > 0) add_flexible(model.flexible_tower.inertia, tower_motion(model, s0, k));
+  for (int b = 0; b < model.blade_count && model.rr_blades.mode_count > 0; ++b)
+    add_flexible(model.rr_blades.inertia, blade_motion(model, s0, k, b));
   MassSummary s;
   s.mass_kg = all.mass_kg;
   s.cm_b_m = all.cm_m;

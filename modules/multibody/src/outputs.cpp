@@ -9,6 +9,7 @@
 
 #include "fowtsim/core/rotation.hpp"
 #include "fowtsim/multibody/multibody.hpp"
+#include "fowtsim/multibody/blade_body.hpp"
 #include "fowtsim/multibody/tower_body.hpp"
 
 namespace fowtsim::multibody {
@@ -62,6 +63,22 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
   }
   yaw.head<3>() += rotor_force;
   yaw.tail<3>() += rotor_moment;
+  // Rayleigh–Ritz blades: each blade's load on the hub at its root — its d'Alembert load and its
+  // station loads, about the root — carried to the yaw bearing.
+  const RayleighRitzBlades& rr = model.rr_blades;
+  for (int b = 0; b < model.blade_count && rr.mode_count > 0; ++b) {
+    const FlexibleBodyDAlembert d = flexible_body_dalembert(rr.inertia, blade_motion(model, state, k, b), udot, gravity);
+    const Vec3& root = k.blade_root[b].position_m;
+    Vec6& load = out.blade_root_loads[b];
+    load << d.force_N, d.moment_N_m;
+    for (int s = 0; s < loads.blade_station_load_count; ++s) {
+      const BladeStationLoad& at = loads.blade_station_loads[b][s];
+      load.head<3>() += at.force_N;
+      load.tail<3>() += (blade_station_point(model, state, k, b, s).position_m - root).cross(at.force_N) + at.moment_N_m;
+    }
+    yaw.head<3>() += load.head<3>();
+    yaw.tail<3>() += load.tail<3>() + (root - top).cross(load.head<3>());
+  }
 
   // Tower base: the tower (+ yaw-bearing mass) with its external loads, and the yaw-bearing load
   // carried down.
@@ -160,14 +177,36 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
   }
   // ElastoDyn's TwrClrnc{b}: from the deflected tower top (yaw bearing) to the blade tip, in the nacelle
   // frame: the distance from the yaw axis when the tip is below the yaw bearing, else the distance from
-  // the yaw bearing (no tower radius taken off). Rigid blades: the tip on the preconed pitch axis at TipRad.
+  // the yaw bearing (no tower radius taken off). Rigid blades: the tip on the preconed pitch axis at TipRad;
+  // Rayleigh–Ritz blades: the deflected tip.
   if (!model.params.rotor.flexible_blades) {
     const double length = model.params.rotor.tip_radius_m - model.params.rotor.hub_radius_m;
     for (int i = 0; i < model.blade_count; ++i) {
-      const Vec3 tip = k.blade_root[i].position_m + length * k.blade_root_orientation[i].col(2);
+      const Vec3 tip = rr.mode_count > 0 ? blade_station_point(model, state, k, i, rr.station_count - 1).position_m
+                                          : Vec3(k.blade_root[i].position_m + length * k.blade_root_orientation[i].col(2));
       const Vec3 r = k.nacelle.orientation.transpose() * (tip - top);
       c[n++] = r.z() > 0.0 ? r.norm() : r.head<2>().norm();  // TwrClrnc{i+1}
     }
+  }
+  // Rayleigh–Ritz blades, ElastoDyn's channels: root loads (blade on hub) in the coned frame c (= r)
+  // and the pitched blade frame b (= f); tip deflection relative to the undeflected blade in both
+  // (no axial shortening in these shapes: no TipDz); OoPDefl = TipDxc, IPDefl = TipDyc.
+  for (int b = 0; b < model.blade_count && rr.mode_count > 0; ++b) {
+    const Mat3& t_gc = k.blade_root_orientation[b];
+    const Mat3& t_gf = k.blade_frame_orientation[b];
+    const Vec6& load = out.blade_root_loads[b];
+    const Vec3 tip_f = blade_deflection(model, state, b, rr.station_count - 1);
+    const Vec3 tip_c = t_gc.transpose() * (t_gf * tip_f);
+    for (const Mat3* frame : {&t_gc, &t_gf}) {
+      put3(frame->transpose() * load.head<3>(), 1e-3);  // RootF{x,y,z}{c,b} (kN)
+      put3(frame->transpose() * load.tail<3>(), 1e-3);  // RootM{x,y,z}{c,b} (kN·m)
+    }
+    c[n++] = tip_c.x();  // TipDxc
+    c[n++] = tip_c.y();  // TipDyc
+    c[n++] = tip_f.x();  // TipDxb
+    c[n++] = tip_f.y();  // TipDyb
+    c[n++] = tip_c.x();  // OoPDefl
+    c[n++] = tip_c.y();  // IPDefl
   }
   return out;
 }
@@ -247,6 +286,26 @@ std::vector<ChannelInfo> Multibody::channels(const Model& model) {
       c.push_back({"TwrClrnc" + std::to_string(i), "m",
                    "blade " + std::to_string(i) + " tip-to-tower clearance estimate (ElastoDyn: from the yaw axis when the "
                    "tip is below the yaw bearing, else from the yaw bearing; tower radius not taken off)", m});
+  if (model.rr_blades.mode_count > 0) {
+    static const char* const axes = "xyz";
+    for (int b = 1; b <= model.blade_count; ++b) {
+      const std::string blade = std::to_string(b);
+      for (const char* frame : {"c", "b"}) {
+        const std::string where = std::string(frame) == "c" ? "coned root frame c" : "pitched blade frame b";
+        for (int i = 0; i < 3; ++i)
+          c.push_back({std::string("RootF") + axes[i] + frame + blade, "kN",
+                       "blade " + blade + " root force along " + axes[i] + " of the " + where + " (blade on hub)", m});
+        for (int i = 0; i < 3; ++i)
+          c.push_back({std::string("RootM") + axes[i] + frame + blade, "kN-m",
+                       "blade " + blade + " root moment about " + axes[i] + " of the " + where + " (blade on hub)", m});
+      }
+      for (const char* name : {"TipDxc", "TipDyc", "TipDxb", "TipDyb"})
+        c.push_back({name + blade, "m", "blade " + blade + " tip deflection relative to the undeflected blade, " +
+                                            std::string(name + 4) + " axis", m});
+      c.push_back({"OoPDefl" + blade, "m", "blade " + blade + " out-of-plane tip deflection (= TipDxc)", m});
+      c.push_back({"IPDefl" + blade, "m", "blade " + blade + " in-plane tip deflection (= TipDyc)", m});
+    }
+  }
   return c;
 }
 

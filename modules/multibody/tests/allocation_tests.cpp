@@ -3,6 +3,7 @@
 
 #include "fowtsim/testing/allocation_counter.hpp"
 
+#include "fowtsim/flexbody/blade_deck.hpp"
 #include "fowtsim/multibody/multibody.hpp"
 #include "fowtsim/multibody/oc3.hpp"
 #include "test_support.hpp"
@@ -50,13 +51,17 @@ TEST_CASE("channels() and the Output channel array agree in size", "[unit][multi
   Params p = oc3_hywind_params();
   set_oc3_flexible_tower(p);
   p.tower.gauge_heights_m = {0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 77.0};
+  p.rotor.rayleigh_ritz_blade = flexbody::read_elastodyn_blade(FOWTSIM_SOURCE_DIR "/inputs/nrel5mw/blade_elastodyn.yaml");
   CHECK(Multibody::channels(make_model(p)).size() ==
-        static_cast<std::size_t>(kMaxChannelCount));  // every capacity used: 9 gauges, 3 clearances
+        static_cast<std::size_t>(kMaxChannelCount));  // every capacity used: 9 gauges, 3 clearances, 3 RR blades
 }
 
-TEST_CASE("a flexible-tower step and its outputs allocate nothing", "[unit][multibody][flexible_tower]") {
+TEST_CASE("a flexible-tower step with Rayleigh-Ritz blades and its outputs allocate nothing",
+          "[unit][multibody][flexible_tower][rr_blades]") {
   Params p = oc3_hywind_params();
   set_oc3_flexible_tower(p);
+  p.rotor.rayleigh_ritz_blade = flexbody::read_elastodyn_blade(FOWTSIM_SOURCE_DIR "/inputs/nrel5mw/blade_elastodyn.yaml");
+  p.rotor.blade_station_spans_m = {10.0, 30.0, 50.0};
   p.nacelle.yaw_prescribed = true;
   p.initial_conditions.rotor_speed_rpm = 12.1;
   p.initial_conditions.tower_top_deflection_m = {0.2, -0.05};
@@ -67,6 +72,9 @@ TEST_CASE("a flexible-tower step and its outputs allocate nothing", "[unit][mult
   AppliedLoads loads;
   loads.tower_loads[0] = {30.0, Vec3(5.0e3, 1.0e3, 0.0)};  // a tower load: its point, the gauges' filter
   loads.tower_load_count = 1;
+  loads.blade_station_load_count = 4;  // a load at every blade station (the tip's included)
+  for (auto& blade : loads.blade_station_loads)
+    for (auto& at : blade) at = {Vec3(1.0e3, 2.0e2, 0.0), Vec3(0.0, 0.0, 50.0)};
   allocations = 0;
   counting = true;
   double sink = 0.0;

@@ -533,8 +533,8 @@ TEST_CASE("the tower's shape integrals equal Kane's sums over its mass points", 
   ChainKinematics k;
   chain_kinematics(m, s, k);
   const Vec3 g(0.0, 0.0, -p.gravity_m_s2);
-  GeneralisedVector udot;
-  udot << 0.1, -0.2, 0.05, 0.01, -0.02, 0.015, 0.0, 0.0, 0.3, -0.1, 0.2, 0.4;
+  GeneralisedVector udot = GeneralisedVector::Zero();
+  udot.head<kBlade>() << 0.1, -0.2, 0.05, 0.01, -0.02, 0.015, 0.0, 0.0, 0.3, -0.1, 0.2, 0.4;
   GeneralisedMatrix lumped_mass = GeneralisedMatrix::Zero();
   GeneralisedVector lumped_force = GeneralisedVector::Zero();
   Vec3 force = Vec3::Zero(), moment = Vec3::Zero();

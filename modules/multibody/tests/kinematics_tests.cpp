@@ -8,24 +8,29 @@
 #include <catch2/catch.hpp>
 
 #include "fowtsim/core/rotation.hpp"
+#include "fowtsim/flexbody/blade_deck.hpp"
+#include "fowtsim/multibody/blade_body.hpp"
 #include "fowtsim/multibody/dynamics.hpp"
 #include "fowtsim/multibody/kinematics.hpp"
 #include "fowtsim/multibody/multibody.hpp"
 #include "fowtsim/multibody/oc3.hpp"
+#include "fowtsim/multibody/tower_body.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::multibody;
 
 namespace {
 
-// q_i(t) = a_i + b_i sin(c_i t + d_i) for each of the 11 joint coordinates.
+// q_i(t) = a_i + b_i sin(c_i t + d_i) for each of the 11 joint coordinates, the 4 tower modes and
+// the 9 blade modes.
+constexpr int kCoordinates = 11 + kMaxTowerModes + kMaxBlades * kMaxBladeModes;
 struct Trajectory {
-  double a[11], b[11], c[11], d[11];
+  double a[kCoordinates], b[kCoordinates], c[kCoordinates], d[kCoordinates];
   explicit Trajectory(unsigned seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    for (int i = 0; i < 11; ++i) {
-      const bool angle = i >= 3;
+    for (int i = 0; i < kCoordinates; ++i) {
+      const bool angle = i >= 3 && i < 11;
       a[i] = angle ? 0.6 * u(rng) : 5.0 * u(rng);
       b[i] = angle ? 0.7 * u(rng) : 3.0 * u(rng);
       c[i] = 0.5 + std::abs(u(rng));   // rad/s
@@ -53,6 +58,17 @@ struct Trajectory {
     s.rotor_speed_rad_s = qd(7, t) + 1.3;
     s.generator_azimuth_rad = q(8, t) + 1.3 * t;
     s.generator_speed_rad_s = qd(8, t) + 1.3;
+    for (int j = 0; j < kMaxTowerModes; ++j) {
+      s.tower_deflection_m[j] = 0.1 * q(11 + j, t);
+      s.tower_deflection_rate_m_s[j] = 0.1 * qd(11 + j, t);
+    }
+    for (int b = 0; b < kMaxBlades; ++b) {
+      s.blade_pitch_rad[b] = 0.2 * b;
+      for (int j = 0; j < kMaxBladeModes; ++j) {
+        s.blade_deflection_m[b][j] = q(15 + 3 * b + j, t);
+        s.blade_deflection_rate_m_s[b][j] = qd(15 + 3 * b + j, t);
+      }
+    }
     return s;
   }
   GeneralisedVector udot(double t) const {
@@ -64,6 +80,8 @@ struct Trajectory {
     a.segment<3>(3) = euler123_rate_matrix(angles(t)) * Vec3(qdd(3, t), qdd(4, t), qdd(5, t)) + e_dot * angle_rates(t);
     a[kRotor] = qdd(7, t);
     a[kGenerator] = qdd(8, t);
+    for (int j = 0; j < kMaxTowerModes; ++j) a[kTower + j] = 0.1 * qdd(11 + j, t);
+    for (int j = 0; j < kMaxBlades * kMaxBladeModes; ++j) a[kBlade + j] = qdd(15 + j, t);
     return a;
   }
 };
@@ -174,4 +192,46 @@ TEST_CASE("the tower axis crosses sea level where tower influence needs it, wher
   // On the axis through the tower base along z_b: the offset is parallel to the axis.
   const Vec3 offset = chain.tower_base.position_m - at_sea_level;
   CHECK(offset.cross(chain.base.orientation.col(2)).norm() < 1e-9 * offset.norm());
+}
+
+TEST_CASE("flexible tower and Rayleigh-Ritz blade points move as finite differences of their positions",
+          "[verification][multibody][kinematics][rr_blades]") {
+  // The deflected blade stations (blade_station_point) and tower points on a moving, bending tower
+  // with bending, pitched blades: the velocities, Jacobians and bias accelerations that Kane's
+  // equations take, against central differences along the same random trajectories (all 24
+  // coordinates), as the chain's points above.
+  Params p = oc3_hywind_params();
+  p.nacelle.yaw_prescribed = true;
+  set_oc3_flexible_tower(p);
+  p.rotor.rayleigh_ritz_blade = flexbody::read_elastodyn_blade(FOWTSIM_SOURCE_DIR "/inputs/nrel5mw/blade_elastodyn.yaml");
+  p.rotor.blade_station_spans_m = {10.0, 30.0, 50.0};
+  const Model model = make_model(p);
+  double worst_v = 0.0, worst_a = 0.0;
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const Trajectory tr(seed);
+    const double t = 0.37 * seed;
+    const double hv = 1e-4, ha = 1e-3;
+    auto position = [&](double time, int b, int s) {
+      ChainKinematics k;
+      const State st = tr.state(time);
+      chain_kinematics(model, st, k);
+      return s < 0 ? tower_point(model, st, k, 50.0).position_m : blade_station_point(model, st, k, b, s).position_m;
+    };
+    const State st = tr.state(t);
+    ChainKinematics k;
+    chain_kinematics(model, st, k);
+    const GeneralisedVector udot = tr.udot(t);
+    for (int b = 0; b < 3; ++b)
+      for (int s = -1; s < model.rr_blades.station_count; ++s) {
+        const PointKinematics p0 = s < 0 ? tower_point(model, st, k, 50.0) : blade_station_point(model, st, k, b, s);
+        const Vec3 v_fd = (position(t + hv, b, s) - position(t - hv, b, s)) / (2 * hv);
+        const Vec3 a_fd = (position(t + ha, b, s) - 2 * p0.position_m + position(t - ha, b, s)) / (ha * ha);
+        worst_v = std::max(worst_v, (p0.velocity_m_s - v_fd).norm() / std::max(1.0, v_fd.norm()));
+        worst_a = std::max(worst_a, (acceleration(p0, udot) - a_fd).norm() / std::max(1.0, a_fd.norm()));
+      }
+  }
+  WARN("flexible points FD: v " << worst_v << ", a " << worst_a);
+  // As the chain's points above (same differences and steps).
+  CHECK(worst_v < 1e-7);
+  CHECK(worst_a < 1e-5);
 }

@@ -8,6 +8,7 @@
 //    weight L/BldNodes, properties interpolated linearly from the stations to the node — the
 //    midpoint rule ElastoDyn sums its blade mass, moments and generalised matrices with, so its
 //    printed numbers (summary file) are reproduced to their digits.
+//  * Spans: the given points, weight 0 — not a rule, the places where shapes are wanted.
 #include "fowtsim/flexbody/elastodyn_blade.hpp"
 #include "fowtsim/flexbody/quadrature.hpp"
 
@@ -25,13 +26,14 @@ struct BladePoint {
 };
 
 struct BladeRule {
-  enum class Kind { Gauss, ElastoDynNodes };
+  enum class Kind { Gauss, ElastoDynNodes, Spans };
   Kind kind = Kind::Gauss;
   QuadratureRule gauss{};   // Gauss only
   int elastodyn_nodes = 17;  // ElastoDynNodes only: BldNodes (17 in the NREL 5MW ElastoDyn deck)
+  std::vector<double> spans;  // Spans only: points at these x ∈ [0, L] with weight 0 (to evaluate shapes) [m]
 };
 
-// Validates the blade (validate()) and the rule (InputError for elastodyn_nodes < 1).
+// Validates the blade (validate()) and the rule (InputError for elastodyn_nodes < 1 or a span outside [0, L]).
 std::vector<BladePoint> blade_points(const ElastoDynBlade& blade, const BladeRule& rule = {});
 
 // The blade's station table in flexbody's form (x = BlFract L, m × AdjBlMs, EI = flap × AdjFlSt),

@@ -51,6 +51,7 @@ struct ChainKinematics {
   PointKinematics rotor_cm;
   std::array<PointKinematics, kMaxBlades> blade_root{};   // root points
   std::array<Mat3, kMaxBlades> blade_root_orientation{};  // T_g,r_i [-]
+  std::array<Mat3, kMaxBlades> blade_frame_orientation{}; // pitched root frame T_g,f_i = T_g,r_i R_z(−β_i) [-]
 };
 
 // Generalised velocities u of a state (model.hpp Dof order); u[kGenerator] = 0 with a rigid shaft.

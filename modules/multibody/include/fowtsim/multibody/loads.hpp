@@ -21,6 +21,14 @@ struct TowerPointLoad {
 };
 inline constexpr int kMaxTowerLoads = 64;    // capacity of AppliedLoads::tower_loads (checked at deck time)
 
+// A load at a station of a Rayleigh–Ritz blade (model.hpp BladeStation): force at the deflected
+// station and a moment, both g. Not zeroed on construction: only the first
+// AppliedLoads::blade_station_load_count of each blade are read.
+struct BladeStationLoad {
+  Vec3 force_N;                              // g [N]
+  Vec3 moment_N_m;                           // g [N·m]
+};
+
 // Everything that acts on the structure at one instant. Forces in g [N]; moments in g [N·m].
 struct AppliedLoads {
   Vec3 platform_force_N = Vec3::Zero();      // on the base body (hydro + mooring + …), g [N]
@@ -43,6 +51,11 @@ struct AppliedLoads {
   // (a load below the base counting as at the base).
   std::array<TowerPointLoad, kMaxTowerLoads> tower_loads{};
   int tower_load_count = 0;
+  // Rayleigh–Ritz blades: loads at the first blade_station_load_count stations of each blade (the
+  // aerodynamic nodes' loads, lumped there), through the deflected station's Jacobian onto the chain
+  // and the blade modes.
+  std::array<std::array<BladeStationLoad, kMaxBladeStations>, kMaxBlades> blade_station_loads;
+  int blade_station_load_count = 0;
   bool gravity = true;                       // weight of every body, Params::gravity_m_s2 along −z_g
 };
 
@@ -76,7 +89,7 @@ class LoadProvider {
  public:
   virtual ~LoadProvider() = default;
   // Loads at time t for the stage state (its nacelle yaw already set from nacelle_yaw(t)).
-  // `out` arrives default-constructed (all zero, gravity on).
+  // `out` arrives default-constructed (all zero, gravity on; no blade station loads).
   virtual void loads(double t, const State& state, AppliedLoads& out) = 0;
   // The prescribed yaw at time t; called before loads() when the model's yaw is prescribed.
   virtual YawMotion nacelle_yaw(double /*t*/) { return {}; }

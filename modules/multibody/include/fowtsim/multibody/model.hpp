@@ -112,6 +112,28 @@ struct FlexibleTower {
   double top_mass_kg = 0.0;                              // mass above the tower for K^T [kg]
 };
 
+// The Rayleigh–Ritz blades (flexbody's ElastoDyn blade), built by make_model(). Each blade is a
+// flexible body in its pitched root frame f_i = r_i R_z(−β_i) (β: pitch, + toward feather), from
+// its root: points at p = (0, 0, x) bend along φ_j(x) = (flap, edge, 0) displacements per unit q_j
+// (flap along x_f, edge along y_f; ElastoDyn's twisted shapes, so a flap shape moves in-plane too).
+// Pitch is a prescribed rotation without rate terms, as in ElastoDyn.
+inline constexpr int kMaxBladeStations = 64;  // capacity of blade stations (aero nodes + tip)
+struct BladeStation {
+  double span_m = 0.0;                                    // x from the root along the pitch axis [m]
+  std::array<Vec3, kMaxBodyModes> shape{};                // φ_j(x) in f [-]
+  std::array<Vec3, kMaxBodyModes> slope{};                // φ_j'(x) in f [1/m]
+};
+struct RayleighRitzBlades {
+  int mode_count = 0;                                     // 0: rigid or MBBT blades; else 3
+  double length_m = 0.0;                                  // TipRad − HubRad [m]
+  ShapeIntegrals inertia;                                 // one blade, frame f, from the root
+  Mat3 stiffness = Mat3::Zero();                          // K (eq. 20 with ElastoDyn's tuners) [N/m]
+  Mat3 centrifugal_stiffness = Mat3::Zero();              // G per Ω² (eq. 26, centrifugal axial force) [kg]
+  Mat3 damping = Mat3::Zero();                            // ElastoDyn's BldFlDmp/BldEdDmp [N·s/m]
+  std::array<BladeStation, kMaxBladeStations> stations{}; // Params' spans, then the tip
+  int station_count = 0;
+};
+
 struct Model {
   Params params;                          // the validated input, kept for reference
   RigidBody base;                         // platform + tower + yaw-bearing mass, frame b, from the reference point
@@ -128,8 +150,10 @@ struct Model {
   int blade_count = 3;                    // B
   std::array<Mat3, kMaxBlades> blade_root_orientation_h{};  // T_hr_i [-]
   std::array<Vec3, kMaxBlades> blade_root_h{};              // root point i in h, from the apex [m]
-  int dof_count = 7;                      // 7 (rigid drivetrain) or 8 (torsional flexibility); 8 + tower modes with a flexible tower
+  int dof_count = 7;                      // 7 (rigid drivetrain) or 8 (torsional flexibility); 8 + tower modes with a flexible
+                                          // tower; kBlade + 3 B with Rayleigh–Ritz blades (unused rows between: dof_active)
   FlexibleTower flexible_tower;           // mode_count 0: the rigid tower (merged into base)
+  RayleighRitzBlades rr_blades;           // mode_count 0: rigid (in `rotor`) or MBBT blades
   std::array<TowerGauge, kMaxTowerGauges> tower_gauges{};  // the first tower_gauge_count (TowerParams::gauge_heights_m)
   int tower_gauge_count = 0;
   int generator_dof = kRotor;             // index of the DOF that turns the generator
@@ -149,7 +173,8 @@ Model make_model(const Params& params);
 inline bool dof_active(const Model& model, int i) {
   if (i < kGenerator) return true;
   if (i == kGenerator) return model.generator_dof == kGenerator;
-  return i < kTower + model.flexible_tower.mode_count;
+  if (i < kBlade) return i < kTower + model.flexible_tower.mode_count;
+  return model.rr_blades.mode_count > 0 && i < kBlade + model.blade_count * kMaxBladeModes;
 }
 
 // Composite mass properties of the whole structure in b at the initial yaw and azimuth (rigid

@@ -20,8 +20,11 @@ namespace fowtsim::multibody {
 inline constexpr int kChannelCount = 42;       // channels of the rigid-tower model
 inline constexpr int kTowerChannelCount = 2;   // TTDspFA, TTDspSS, appended with a flexible tower
 inline constexpr int kGaugeChannelCount = 8;   // TwHt{k}FL{x,y,z}t, ML{x,y,z}t, TD{x,y}t per tower gauge, appended next
-// Then TwrClrnc1 … B with rigid blades (the flexible blades' tips are not the multibody's).
-inline constexpr int kMaxChannelCount = kChannelCount + kTowerChannelCount + kMaxTowerGauges * kGaugeChannelCount + kMaxBlades;
+// Then TwrClrnc1 … B with rigid or Rayleigh–Ritz blades (the MBBT blades' tips are not the multibody's),
+// then per Rayleigh–Ritz blade RootF/M{x,y,z}{c,b}, TipD{x,y}{c,b}, OoPDefl, IPDefl.
+inline constexpr int kRrBladeChannelCount = 18;
+inline constexpr int kMaxChannelCount = kChannelCount + kTowerChannelCount + kMaxTowerGauges * kGaugeChannelCount + kMaxBlades +
+                                        kMaxBlades * kRrBladeChannelCount;
 
 struct Output {
   GeneralisedVector acceleration = GeneralisedVector::Zero();  // u̇ (model.hpp Dof order) [m/s², rad/s²]
@@ -31,6 +34,7 @@ struct Output {
   Vec6 tower_base_loads = Vec6::Zero();   // [F; M] of everything above on the tower base, about it, frame t (= b axes) [N, N·m]
   Vec6 yaw_bearing_loads = Vec6::Zero();  // [F; M] of nacelle + rotor on the tower top, about it, frame p (= b axes) [N, N·m]
   std::array<FrameMotion, kMaxBlades> blade_root{};  // motion of each blade-root frame r_i (model.hpp)
+  std::array<Vec6, kMaxBlades> blade_root_loads{};   // Rayleigh–Ritz blades: [F; M] of blade i on the hub, about its root, g [N, N·m]
   FrameMotion hub;                        // rotating hub frame h at the apex
   std::array<double, kMaxChannelCount> channels{};  // values of channels(), same order and units (the first channels().size())
 };

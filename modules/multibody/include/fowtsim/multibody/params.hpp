@@ -9,9 +9,11 @@
 // downwind, z up); b platform body frame, origin at the platform reference point, parallel to g
 // when the platform is undisplaced; the tower is straight along z_b.
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "fowtsim/core/types.hpp"
+#include "fowtsim/flexbody/elastodyn_blade.hpp"
 
 namespace fowtsim::multibody {
 
@@ -80,6 +82,14 @@ struct RotorParams {
   double blade_mass_kg = 0.0;             // one blade's mass [kg] (≥ 0; rigid blades only)
   double blade_first_mass_moment_kg_m = 0.0;    // ∫ m r dr about the root [kg·m] (rigid only)
   double blade_second_mass_moment_kg_m2 = 0.0;  // ∫ m r² dr about the root [kg·m²] (rigid only)
+  // Rayleigh–Ritz blades (ElastoDyn's FlapDOF1, FlapDOF2, EdgeDOF): each blade a flexible body with
+  // ElastoDyn's flap 1, flap 2 and edge 1 shapes (flexbody/blade_shapes.hpp) on the hub, instead of
+  // the rigid mass moments above. Its hub and tip radius must equal the rotor's.
+  std::optional<flexbody::ElastoDynBlade> rayleigh_ritz_blade;
+  int rayleigh_ritz_blade_nodes = 17;     // BldNodes: ElastoDyn's midpoint rule for the blade's integrals (≥ 1)
+  // Spans from the root where the blades' points are wanted (the aerodynamic nodes), ascending;
+  // the tip is added as the last station [m].
+  std::vector<double> blade_station_spans_m;
 };
 
 struct DrivetrainParams {

@@ -26,6 +26,13 @@ struct State {
   // Flexible tower: modal coordinates (tower-top deflection of each mode, fore-aft first) [m].
   std::array<double, kMaxTowerModes> tower_deflection_m{};
   std::array<double, kMaxTowerModes> tower_deflection_rate_m_s{};  // [m/s]
+  // Rayleigh–Ritz blades: modal coordinates of blade b, flap 1, flap 2, edge 1 (the shapes' tip
+  // deflection, ElastoDyn's q) [m], and their rates [m/s].
+  std::array<std::array<double, kMaxBladeModes>, kMaxBlades> blade_deflection_m{};
+  std::array<std::array<double, kMaxBladeModes>, kMaxBlades> blade_deflection_rate_m_s{};
+  // Pitch of each blade (+ toward feather), prescribed: held over a step by the driver [rad]. Turns
+  // the Rayleigh–Ritz blades' frames; rigid blades are axisymmetric line masses and ignore it.
+  std::array<double, kMaxBlades> blade_pitch_rad{};
 };
 
 // Its field list (core/fields.hpp): checkpoints and comparison of states.
@@ -34,7 +41,8 @@ void fields(Archive& a, State& s) {
   a.io(s.position_m, s.orientation, s.velocity_m_s, s.angular_velocity_rad_s, s.rotor_azimuth_rad,
        s.rotor_speed_rad_s, s.generator_azimuth_rad, s.generator_speed_rad_s, s.rotor_acceleration_rad_s2,
        s.generator_acceleration_rad_s2, s.nacelle_yaw_rad, s.nacelle_yaw_rate_rad_s,
-       s.nacelle_yaw_acceleration_rad_s2, s.tower_deflection_m, s.tower_deflection_rate_m_s);
+       s.nacelle_yaw_acceleration_rad_s2, s.tower_deflection_m, s.tower_deflection_rate_m_s, s.blade_deflection_m,
+       s.blade_deflection_rate_m_s, s.blade_pitch_rad);
 }
 
 }  // namespace fowtsim::multibody
