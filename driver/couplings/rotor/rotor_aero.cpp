@@ -3,6 +3,8 @@
 #include <numbers>
 
 #include "fowtsim/io/turbsim_bts.hpp"
+#include "fowtsim/core/rotation.hpp"
+#include "fowtsim/multibody/blade_body.hpp"
 #include "fowtsim/multibody/tower_body.hpp"
 #include "fowtsim/wind/turbulence_generator.hpp"
 
@@ -39,6 +41,13 @@ RotorAero::RotorAero(aero::Params params, const wind::WindParams& wind, const mu
   hub_frame_rotor_.precone_rad = -structure.rotor.precone_deg * kDegree;
   hub_frame_rotor_.hub_radius_m = structure.rotor.hub_radius_m;
   aero_channel_count_ = aero::Aero::channels(params_).size();
+  const std::vector<aero::BladeNodeParams>& nodes = params_.blade;
+  span_weight_m_.assign(nodes.size(), 0.0);
+  for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+    const double half = 0.5 * (nodes[k + 1].span_m - nodes[k].span_m);
+    span_weight_m_[k] += half;
+    span_weight_m_[k + 1] += half;
+  }
 }
 
 RotorAero::Data RotorAero::make_data() const {
@@ -49,6 +58,7 @@ RotorAero::Data RotorAero::make_data() const {
   d.unsteady = aero::Aero::make_state(params_);
   d.points.resize(static_cast<std::size_t>(aero::node_count(params_)));
   d.inflow.resize(d.points.size());
+  d.arms.resize(d.points.size());
   return d;
 }
 
@@ -116,6 +126,47 @@ void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, doub
   d.moment_N_m = t_gh * d.output.rotor.moment_hub_N_m;
 }
 
+void RotorAero::evaluate_rayleigh_ritz(double t, const multibody::Model& model, const multibody::State& state,
+                                       const multibody::ChainKinematics& chain, Data& d, multibody::AppliedLoads* out,
+                                       aero::Induction induction) const {
+  const Mat3& t_gh = chain.rotor.orientation;
+  const Vec3& omega = chain.rotor.angular_velocity_rad_s;
+  aero::Aero::Input& in = d.input;
+  const int nb = params_.number_of_blades, nn = aero::nodes_per_blade(params_);
+  for (int b = 0; b < nb; ++b) {
+    const Mat3& t_gc = chain.blade_root_orientation[b];  // coned, unpitched: the rigid rotor's blade frame
+    const Mat3& t_gf = chain.blade_frame_orientation[b];
+    const double pitch = state.blade_pitch_rad[b];
+    in.blade_pitch_rad[b] = pitch;
+    for (int k = 0; k < nn; ++k) {
+      const aero::BladeNodeParams& node = params_.blade[static_cast<std::size_t>(k)];
+      const auto c = static_cast<Eigen::Index>(b * nn + k);
+      const multibody::PointKinematics p = multibody::blade_station_point(model, state, chain, b, k);
+      // The elastic rotation of the section, in g: the deflected section frame relative to f.
+      const Mat3 turn = multibody::blade_section_orientation(model, state, chain, b, k) * t_gf.transpose();
+      const Vec3 offset = turn * (t_gc * Vec3(node.curve_ac_m, node.sweep_ac_m, 0.0));  // aerodynamic centre from the pitch axis
+      in.node_position_m.col(c) = p.position_m + offset;
+      d.arms[static_cast<std::size_t>(c)] = offset;
+      in.node_orientation[static_cast<std::size_t>(c)] =
+          turn * t_gc * rotation_y(node.curve_angle_rad) * rotation_z(-(node.twist_rad + pitch));
+      in.node_velocity_m_s.col(c) = p.velocity_m_s + omega.cross(offset);
+      // As the rigid rotor: the platform's and nacelle's rotation about the span axis (unsteady airfoils).
+      in.node_pitch_rate_rad_s(c) = chain.shaft.angular_velocity_rad_s.dot(in.node_orientation[static_cast<std::size_t>(c)].col(2));
+    }
+  }
+  evaluate_placed(t, chain.apex.position_m, t_gh, state.rotor_speed_rad_s, {state.blade_pitch_rad.data(), static_cast<std::size_t>(nb)},
+                  multibody::tower_axis_at_sea_level(chain), chain.base.orientation.col(2), induction, d);
+  if (!out) return;
+  out->blade_station_load_count = nn;
+  for (int b = 0; b < nb; ++b)
+    for (int k = 0; k < nn; ++k) {
+      const auto c = static_cast<Eigen::Index>(b * nn + k);
+      const double w = span_weight_m_[static_cast<std::size_t>(k)];
+      const Vec3 force = w * d.output.force_N_m.col(c);
+      out->blade_station_loads[b][k] = {force, w * d.output.moment_N_m_m.col(c) + d.arms[static_cast<std::size_t>(c)].cross(force)};
+    }
+}
+
 void RotorAero::evaluate_placed(double t, const Vec3& apex_m, const Mat3& t_gh, double rotor_speed_rad_s,
                                 std::span<const double> pitch_rad, const Vec3& tower_base_m, const Vec3& tower_axis,
                                 aero::Induction induction, Data& d) const {
@@ -135,11 +186,12 @@ void RotorAero::evaluate_placed(double t, const Vec3& apex_m, const Mat3& t_gh, 
   d.moment_N_m = t_gh * d.output.rotor.moment_hub_N_m;
 }
 
-void RotorAero::advance_states(const multibody::Model& model, const multibody::State& end, double t_end, double pitch_rad,
-                               Data& d) const {
+void RotorAero::advance_states(const multibody::Model& model, const multibody::State& end, double t_end, Data& d) const {
   if (!unsteady()) return;
   multibody::chain_kinematics(model, end, d.chain);
-  evaluate(t_end, d.chain, end.rotor_speed_rad_s, pitch_rad, d, d.unsteady.started ? aero::Induction::held : aero::Induction::solve);
+  const aero::Induction induction = d.unsteady.started ? aero::Induction::held : aero::Induction::solve;
+  if (model.rr_blades.mode_count > 0) evaluate_rayleigh_ritz(t_end, model, end, d.chain, d, nullptr, induction);
+  else evaluate(t_end, d.chain, end.rotor_speed_rad_s, end.blade_pitch_rad[0], d, induction);
   if (!d.unsteady.started) {
     aero::start_states(params_, d.input, d.output, t_end, d.unsteady);
     return;

@@ -34,6 +34,7 @@ class RotorAero {
     aero::Aero::Input local;            // workspace: the rigid rotor placed at the origin with h = identity
     multibody::ChainKinematics chain;   // workspace: advance_states' end configuration
     std::vector<Vec3> points, inflow;   // workspace: node positions and their wind
+    std::vector<Vec3> arms;             // workspace: Rayleigh–Ritz blades, each node's aerodynamic centre from its station, g
   };
 
   // What the constructor sets up of the wind: all of it for a run, or for a deck check (a sweep
@@ -52,6 +53,15 @@ class RotorAero {
   // force at the apex and moment about it, inertial frame [N, N·m], into d.force_N, d.moment_N_m.
   void evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad, Data& d,
                 aero::Induction induction = aero::Induction::solve) const;
+  // Rayleigh–Ritz blades (the model's stations are the aero nodes' spans, then the tip): every node
+  // on its deflected station — position, airfoil frame turned by the section's elastic rotation,
+  // the station's velocity — at each blade's pitch (state.blade_pitch_rad), evaluated; d.force_N and
+  // d.moment_N_m get the rotor resultant, and `out` (if given) the node loads lumped to the stations
+  // (trapezoid weights of the per-span loads, which the aero module integrates piecewise linearly,
+  // so the lumped forces sum to its resultant exactly), moments about the stations.
+  void evaluate_rayleigh_ritz(double t, const multibody::Model& model, const multibody::State& state,
+                              const multibody::ChainKinematics& chain, Data& d, multibody::AppliedLoads* out,
+                              aero::Induction induction = aero::Induction::solve) const;
   // Flexible blades: the caller places every node (position, airfoil frame, structural velocity,
   // all in g; BladeAeroMap::place) in d.input, then evaluate_placed() computes the loads per node
   // into d.output and the rotor resultant about the apex.
@@ -78,13 +88,12 @@ class RotorAero {
   // their states are read by every evaluation and advanced only here. Nothing happens when the
   // deck asks for neither.
   bool unsteady() const { return aero::has_unsteady_models(params_); }
-  // Rigid blades, once per large step: the rotor evaluated at the step's end (t_end, the multibody
+  // Rigid or Rayleigh–Ritz blades, once per large step: the rotor evaluated at the step's end (t_end, the multibody
   // state after the step) with the states of its start, then the states advanced to t_end. The
   // end evaluation holds the induction of the last Runge–Kutta stage (also at t_end, on the
   // predicted state): its quasi-steady BEM solve is the filters' input, and no second solve is
   // needed. The first call starts the states there (the first step is quasi-steady).
-  void advance_states(const multibody::Model& model, const multibody::State& end, double t_end, double pitch_rad,
-                      Data& d) const;
+  void advance_states(const multibody::Model& model, const multibody::State& end, double t_end, Data& d) const;
   // Flexible blades, at every small step: after evaluate_placed() at t, advances the states from
   // their time to t with that evaluation and evaluates again (held induction) so the output and
   // loads carry the new states; at a time not after the states' (the start's static passes) it
@@ -105,6 +114,7 @@ class RotorAero {
   wind::WindParams wind_params_;
   std::shared_ptr<const wind::WindField> wind_;  // null only for a turbulent wind set up for a check
   aero::RigidRotor hub_frame_rotor_;  // the rotor placed at the origin with h = identity
+  std::vector<double> span_weight_m_;  // trapezoid weight of each blade node along the span [m]
   std::size_t aero_channel_count_ = 0;
 };
 
@@ -112,7 +122,7 @@ class RotorAero {
 template <class Archive>
 void fields(Archive& a, RotorAero::Data& d) {
   a.io(d.input, d.output, d.unsteady, d.force_N, d.moment_N_m);
-  a.scratch(d.local, d.chain, d.points, d.inflow);
+  a.scratch(d.local, d.chain, d.points, d.inflow, d.arms);
 }
 
 }  // namespace fowtsim::driver

@@ -8,6 +8,7 @@
 #include "decks/deck_helpers.hpp"
 #include "decks/deck_section.hpp"
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/flexbody/blade_deck.hpp"
 
 namespace fowtsim::driver {
 
@@ -104,7 +105,20 @@ const DeckSection<multibody::Params>& structure_section() {
         .key("blade_first_mass_moment_kg_m", Schema::number().at_least(0.0).default_value(0.0).doc("about the root (rigid)"),
              &RotorParams::blade_first_mass_moment_kg_m)
         .key("blade_second_mass_moment_kg_m2", Schema::number().at_least(0.0).default_value(0.0).doc("about the root (rigid)"),
-             &RotorParams::blade_second_mass_moment_kg_m2);
+             &RotorParams::blade_second_mass_moment_kg_m2)
+        .custom("rayleigh_ritz_blade_file",
+                Schema::string().optional().doc("FlapDOF1/2, EdgeDOF: Rayleigh-Ritz blades from an ElastoDyn blade deck (e.g. "
+                                                "inputs/nrel5mw/blade_elastodyn.yaml), relative to this deck file; absent = rigid"),
+                [](const io::ValidatedDeck& d, const std::string& key, RotorParams& r) {
+                  try {
+                    r.rayleigh_ritz_blade = flexbody::read_elastodyn_blade(file_beside_deck(d, key));
+                  } catch (const InputError& e) {
+                    throw InputError(e.context(), where(d, key) + ": " + e.message());
+                  }
+                })
+        .key("rayleigh_ritz_blade_nodes", Schema::integer().at_least(1).default_value(17).doc("BldNodes: the Rayleigh-Ritz blades' "
+                                                                                               "integration nodes (ElastoDyn's midpoint rule)"),
+             &RotorParams::rayleigh_ritz_blade_nodes);
     DeckSection<DrivetrainParams> drivetrain;
     drivetrain.key("gearbox_ratio", Schema::number().greater_than(0.0).doc("GBRatio"), &DrivetrainParams::gearbox_ratio)
         .key("generator_inertia_kg_m2", non_negative("GenIner (HSS)"), &DrivetrainParams::generator_inertia_kg_m2)

@@ -19,12 +19,22 @@ namespace {
 const char* const kCoordinates[] = {"PtfmSurge", "PtfmSway", "PtfmHeave", "PtfmRoll", "PtfmPitch", "PtfmYaw", "Azimuth",
                                     "GenAzimuth"};
 
-// The names of the model's coordinates: the above, then a flexible tower's modes, fore-aft first
-// (ElastoDyn's DOF names TwFADOF1, TwFADOF2, TwSSDOF1, TwSSDOF2).
-std::vector<std::string> coordinate_names(int n, int fore_aft) {
-  std::vector<std::string> names(kCoordinates, kCoordinates + std::min(n, 8));
-  for (int j = 8; j < n; ++j)
-    names.push_back(j - 8 < fore_aft ? fmt::format("TwFADOF{}", j - 7) : fmt::format("TwSSDOF{}", j - 7 - fore_aft));
+// The names of the model's coordinates (multibody Dof indices): the above, a flexible tower's modes,
+// fore-aft first (ElastoDyn's DOF names TwFADOF1, TwFADOF2, TwSSDOF1, TwSSDOF2), Rayleigh–Ritz
+// blades' modes (ElastoDyn's modal channels Q_B<b>F1, Q_B<b>F2, Q_B<b>E1).
+std::vector<std::string> coordinate_names(const std::vector<int>& dofs, int fore_aft) {
+  std::vector<std::string> names;
+  for (const int k : dofs) {
+    if (k < multibody::kTower) names.push_back(kCoordinates[k]);
+    else if (k < multibody::kBlade) {
+      const int j = k - multibody::kTower;
+      names.push_back(j < fore_aft ? fmt::format("TwFADOF{}", j + 1) : fmt::format("TwSSDOF{}", j + 1 - fore_aft));
+    } else {
+      const int j = k - multibody::kBlade;
+      static const char* const mode[] = {"F1", "F2", "E1"};
+      names.push_back(fmt::format("Q_B{}{}", j / multibody::kMaxBladeModes + 1, mode[j % multibody::kMaxBladeModes]));
+    }
+  }
   return names;
 }
 
@@ -53,18 +63,24 @@ ModesResult floating_modes(const std::filesystem::path& deck_path, const std::ve
   FloatingScene scene(deck);
   const FloatingState state = scene.make_state();
   const Eigen::MatrixXd a = scene.linearised_system(0.0, state);
-  const int n = scene.dof_count();
+  const std::vector<int> dofs = scene.coordinates();
+  const int n = static_cast<int>(dofs.size());
   Eigen::EigenSolver<Eigen::MatrixXd> solver(a);
   if (solver.info() != Eigen::Success)
     throw NumericalError({"modes", 0.0, "eigenvalues", "check that the deck's structure is stable at its initial state"},
                          "the eigenvalue solver did not converge");
   ModesResult result;
-  result.coordinates = coordinate_names(n, scene.tower_fore_aft_modes());
+  result.coordinates = coordinate_names(dofs, scene.tower_fore_aft_modes());
   const Eigen::VectorXcd lambda = solver.eigenvalues();
+  // A free rotor's azimuth is a rigid-body (zero) mode; its eigenvalues come out as ±1e-8 rad/s of
+  // round-off in the central differences, whose sign would read as a damping of ±1. Below 1e-6 of
+  // the largest |λ| (the differences resolve ~1e-8 of it) an eigenvalue is zero.
+  const double resolution = 1e-6 * lambda.cwiseAbs().maxCoeff();
   // One mode per conjugate pair (the one with Im λ ≥ 0) and per real eigenvalue.
   for (Eigen::Index i = 0; i < lambda.size(); ++i) {
     if (lambda[i].imag() < 0.0) continue;
-    result.modes.push_back(mode_of(lambda[i], solver.eigenvectors().col(i), n, result.coordinates));
+    const std::complex<double> value = std::abs(lambda[i]) < resolution ? std::complex<double>(0.0) : lambda[i];
+    result.modes.push_back(mode_of(value, solver.eigenvectors().col(i), n, result.coordinates));
   }
   std::sort(result.modes.begin(), result.modes.end(),
             [](const StructuralMode& x, const StructuralMode& y) { return x.frequency_hz < y.frequency_hz; });

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -64,6 +65,8 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
     if (blades_ || rotor_) multibody::chain_kinematics(model_, s, chain_);
     if (blades_) {  // flexible blades: their held root loads, aerodynamics included
       blades_->add_stage_loads(chain_, *blades_data_, out);
+    } else if (rotor_ && model_.rr_blades.mode_count > 0) {  // Rayleigh–Ritz blades: loads at their stations
+      rotor_->evaluate_rayleigh_ritz(t, model_, s, chain_, *aero_data_, &out);
     } else if (rotor_) {
       rotor_->evaluate(t, chain_, s.rotor_speed_rad_s, held_->pitch_rad, *aero_data_);
       out.rotor_force_N = aero_data_->force_N;
@@ -106,6 +109,11 @@ Schema floating_scene_schema() {
 
 FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : structure_(structure_params(deck.section("structure"))) {
   if (deck.has("blades")) TurbineBlades::configure(structure_);
+  std::optional<aero::Params> aero;
+  if (deck.has("aero")) aero = aero_params(deck);
+  // Rayleigh–Ritz blades carry the aerodynamic loads at the aero nodes' spans (stations of the model).
+  if (structure_.rotor.rayleigh_ritz_blade && aero)
+    for (const aero::BladeNodeParams& node : aero->blade) structure_.rotor.blade_station_spans_m.push_back(node.span_m);
   model_ = located(deck.section("structure"), [&] { return multibody::make_model(structure_); });
   if (deck.has("aero") && (!deck.has("airfoils") || !deck.has("wind")))
     throw InputError({"floating", std::nullopt, "aero", "airfoils and wind sections"},
@@ -125,7 +133,7 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   dt_s_ = simulation_keys(deck).dt_s;
   sea_.emplace(deck, platform_motion(initial), dt_s_);
   if (deck.has("aero")) {
-    rotor_.emplace(aero_params(deck), wind_params(deck.section("wind")), structure_,
+    rotor_.emplace(std::move(*aero), wind_params(deck.section("wind")), structure_,
                    setup == SetUp::check ? RotorAero::WindSetUp::check : RotorAero::WindSetUp::run);
     // One rotor, two descriptions: the aero blade table and the structure must agree on it.
     const aero::Params& ap = rotor_->params();
@@ -220,7 +228,8 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
   if (blades_)
     throw InputError({"modes", std::nullopt, "blades", "rigid blades (drop the `blades` section)"},
                      "the flexible blades' states are not linearised yet: modes of the rigid-blade structure only");
-  const int n = model_.dof_count;
+  const std::vector<int> dofs = coordinates();
+  const int n = static_cast<int>(dofs.size());
   FloatingState work = s;  // the loads' warm starts and memories change on a copy only
   auto accelerations = [&](const multibody::State& body) {
     work.sea = s.sea;
@@ -229,7 +238,9 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
     multibody::AppliedLoads loads;
     stage_loads_->loads(t, body, loads);
     multibody::evaluate(model_, body, loads, t, evaluation_);
-    return Eigen::VectorXd(evaluation_.acceleration.head(n));
+    Eigen::VectorXd a(n);
+    for (int i = 0; i < n; ++i) a[i] = evaluation_.acceleration[dofs[static_cast<std::size_t>(i)]];
+    return a;
   };
   // Coordinate k displaced by h: translations in g, rotations about b's axes (so that δq̇ = u),
   // the rotor and generator angles.
@@ -239,7 +250,8 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
     else if (k < 6) b.orientation = (b.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(h, Vec3::Unit(k - 3)))).normalized();
     else if (k == multibody::kRotor) b.rotor_azimuth_rad += h;
     else if (k == multibody::kGenerator) b.generator_azimuth_rad += h;
-    else b.tower_deflection_m[k - multibody::kTower] += h;
+    else if (k < multibody::kBlade) b.tower_deflection_m[k - multibody::kTower] += h;
+    else b.blade_deflection_m[(k - multibody::kBlade) / multibody::kMaxBladeModes][(k - multibody::kBlade) % multibody::kMaxBladeModes] += h;
     return b;
   };
   auto sped_up = [&](int k, double h) {
@@ -248,7 +260,8 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
     else if (k < 6) b.angular_velocity_rad_s[k - 3] += h;
     else if (k == multibody::kRotor) b.rotor_speed_rad_s += h;
     else if (k == multibody::kGenerator) b.generator_speed_rad_s += h;
-    else b.tower_deflection_rate_m_s[k - multibody::kTower] += h;
+    else if (k < multibody::kBlade) b.tower_deflection_rate_m_s[k - multibody::kTower] += h;
+    else b.blade_deflection_rate_m_s[(k - multibody::kBlade) / multibody::kMaxBladeModes][(k - multibody::kBlade) % multibody::kMaxBladeModes] += h;
     if (model_.generator_dof == multibody::kRotor) b.generator_speed_rad_s = b.rotor_speed_rad_s;  // rigid shaft
     return b;
   };
@@ -257,11 +270,19 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
   constexpr double h = 1e-4;
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * n, 2 * n);
   a.topRightCorner(n, n).setIdentity();
-  for (int k = 0; k < n; ++k) {
-    a.block(n, k, n, 1) = (accelerations(displaced(k, h)) - accelerations(displaced(k, -h))) / (2.0 * h);
-    a.block(n, n + k, n, 1) = (accelerations(sped_up(k, h)) - accelerations(sped_up(k, -h))) / (2.0 * h);
+  for (int i = 0; i < n; ++i) {
+    const int k = dofs[static_cast<std::size_t>(i)];
+    a.block(n, i, n, 1) = (accelerations(displaced(k, h)) - accelerations(displaced(k, -h))) / (2.0 * h);
+    a.block(n, n + i, n, 1) = (accelerations(sped_up(k, h)) - accelerations(sped_up(k, -h))) / (2.0 * h);
   }
   return a;
+}
+
+std::vector<int> FloatingScene::coordinates() const {
+  std::vector<int> dofs;
+  for (int k = 0; k < model_.dof_count; ++k)
+    if (multibody::dof_active(model_, k)) dofs.push_back(k);
+  return dofs;
 }
 
 RotorDemands FloatingScene::demands(const FloatingState& s) const {
@@ -275,6 +296,7 @@ FloatingState FloatingScene::make_state() {
   FloatingState s;
   s.body = multibody::Multibody::make_state(model_);
   s.held = {0.0, initial_pitch_rad_};
+  s.body.blade_pitch_rad.fill(initial_pitch_rad_);
   if (controller_) s.controller = controller_->make_data();
   s.sea = sea_->initial_data();
   if (rotor_) s.aero = rotor_->make_data();
@@ -302,6 +324,7 @@ void FloatingScene::sample_controller(double t, double dt, FloatingState& s) con
   if (rotor_) u.hub_wind_speed_m_s = rotor_->probe_wind(t).x();
   controller_->advance(u, t, dt, *s.controller);
   s.held = {s.controller->output.generator_torque_N_m, s.controller->output.blade_pitch_rad[0]};
+  s.body.blade_pitch_rad.fill(s.held.pitch_rad);  // the structure's blades turn to it at once (rigid pitch actuator)
 }
 
 void FloatingScene::step(double t, double dt, FloatingState& s) {
@@ -309,7 +332,7 @@ void FloatingScene::step(double t, double dt, FloatingState& s) {
   stage_loads_->act_on(s.held, s.sea, aero, s.blades ? &*s.blades : nullptr);
   if (!blades_) {
     multibody::Multibody::advance(model_, *stage_loads_, t, dt, s.body);
-    if (rotor_) rotor_->advance_states(model_, s.body, t + dt, s.held.pitch_rad, *aero);  // UA/DBEMT, if on
+    if (rotor_) rotor_->advance_states(model_, s.body, t + dt, *aero);  // UA/DBEMT, if on
   } else {
     blades_->advance(*stage_loads_, [this](double tt, const multibody::State& b) { return shaft_at(tt, b); }, demands(s), t,
                      dt, s.body, *s.blades, aero);
@@ -374,6 +397,7 @@ std::string FloatingScene::coupling_description() const {
   std::vector<std::string> parts{"rigid multibody"};
   if (!sea_description_.empty()) parts.push_back(sea_description_);
   if (blades_) parts.push_back(blades_->description() + (rotor_ ? ", BEM on the deflected blades" : ", no aerodynamics"));
+  else if (rotor_ && model_.rr_blades.mode_count > 0) parts.push_back("Rayleigh-Ritz blades with BEM on the deflected blades at every RK4 stage");
   else if (rotor_) parts.push_back("rigid blades with BEM at every RK4 stage");
   else parts.push_back("rigid blades, no aerodynamics");
   parts.push_back(controller_ ? "controller at the large step" : "no controller (generator torque 0, pitch held)");

@@ -87,13 +87,14 @@ class FloatingScene {
   std::string coupling_description() const;
   // The inflow (null without aerodynamics) and the sea, for checks of the records they read.
   // The equations of motion linearised about `s` at time t (fowtsim modes): ẋ = A x for
-  // x = [δq; u], q the multibody's coordinates (platform position in g, rotation in b, rotor and
-  // generator angles) and u their speeds, by central differences of the stage loads and the
+  // x = [δq; u], q the multibody's coordinates() (platform position in g, rotation in b, rotor and
+  // generator angles, tower and Rayleigh–Ritz blade modes) and u their speeds, by central differences of the stage loads and the
   // multibody's accelerations. Open loop: the controller's demands are held; the sea's radiation
   // memory is held (potential flow enters through A(∞)). The flexible blades' own states are not in
   // x: InputError with them.
   Eigen::MatrixXd linearised_system(double t, const FloatingState& s);
-  int dof_count() const { return model_.dof_count; }
+  // The multibody DOFs (model.hpp Dof indices) the linearisation's coordinates are, in order.
+  std::vector<int> coordinates() const;
   int tower_fore_aft_modes() const { return model_.flexible_tower.fore_aft_count; }
   const wind::WindField* wind() const { return rotor_ ? &rotor_->wind() : nullptr; }
   const SeaModules& sea() const { return *sea_; }
