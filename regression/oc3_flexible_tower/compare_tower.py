@@ -1,11 +1,13 @@
-"""The OC3 load case with the flexible tower against OpenFAST v5's `…_600s.out` (issue 24).
+"""The OC3 load case with the flexible tower and Rayleigh–Ritz blades against OpenFAST v5's `…_600s.out`
+(issue 24).
 
-Usage: compare_tower.py REFERENCE.out RIGID_TOWER.out FLEXIBLE_TOWER.out
+Usage: compare_tower.py REFERENCE.out RIGID_TOWER.out FLEXIBLE_TOWER.out RR_RIGID_TOWER.out RR_FLEXIBLE_TOWER.out
 
-Both of ours carry rigid blades (ElastoDyn's are flexible: not yet like-for-like in the blades),
-WAMIT potential flow, unsteady airfoils and the tower's aerodynamics, as OpenFAST's deck. Prints
-means and standard deviations over 100–600 s for the rigid and the flexible tower, the tower peak
-of the spectra, and checks what the tower itself decides, each bound with its reason.
+The first two carry rigid blades, the last two Rayleigh–Ritz blades (ElastoDyn's: the same
+structural model as OpenFAST's deck, so the last case is like-for-like in structure); all with WAMIT
+potential flow, unsteady airfoils and the tower's aerodynamics, as OpenFAST's deck. Prints means and
+standard deviations over 100–600 s, the tower peak of the spectra, and checks what the structure
+decides, each bound with its reason.
 """
 import os
 import sys
@@ -45,33 +47,41 @@ def tower_peak(t, x, low=0.40, high=0.56):
     return float(np.sum(f[band] * psd[band]) / np.sum(psd[band]))
 
 
+CASES = ("rigid/rigid", "rigid/flex", "RR/rigid", "RR/flex")  # blades/tower
+CHANNELS = [("PtfmSurge", "m"), ("PtfmPitch", "deg"), ("PtfmRoll", "deg"), ("RotSpeed", "rpm"), ("GenPwr", "kW"),
+            ("TwrBsFxt", "kN"), ("TwrBsMxt", "kN-m"), ("TwrBsMyt", "kN-m"), ("YawBrFxp", "kN"), ("YawBrMyp", "kN-m"),
+            ("TTDspFA", "m"), ("TTDspSS", "m"), ("TwHt1MLxt", "kN-m"), ("TwHt1MLyt", "kN-m"), ("TwrClrnc1", "m"),
+            ("OoPDefl1", "m"), ("IPDefl1", "m"), ("RootMxc1", "kN-m"), ("RootMyc1", "kN-m"), ("RootFzc1", "kN")]
+
+
 def main():
-    ref, rigid, flexible = (channels(p) for p in sys.argv[1:4])
-    print(f"OC3 load case {WINDOW[0]:.0f}–{WINDOW[1]:.0f} s: OpenFAST v5 (ElastoDyn) vs ours, rigid blades")
-    print(f"{'channel':<11}{'unit':>6} {'OF mean':>10} {'rigid':>10} {'flexible':>10} {'Δ%':>6} | "
-          f"{'OF std':>9} {'rigid':>9} {'flexible':>9} {'Δ%':>6}")
+    ref, *ours = (channels(p) for p in sys.argv[1:6])
+    print(f"OC3 load case {WINDOW[0]:.0f}–{WINDOW[1]:.0f} s: OpenFAST v5 (ElastoDyn) vs ours, blades/tower; "
+          "Δ% of RR/flex (like-for-like)")
+    print(f"{'channel':<10}{'unit':>5} {'OF mean':>9}" + "".join(f"{c:>11}" for c in CASES) + f"{'Δ%':>6} | "
+          f"{'OF std':>8}" + "".join(f"{c:>11}" for c in CASES) + f"{'Δ%':>6}")
     stats = {}
-    for name, unit in [("PtfmSurge", "m"), ("PtfmPitch", "deg"), ("PtfmRoll", "deg"), ("RotSpeed", "rpm"),
-                       ("TwrBsFxt", "kN"), ("TwrBsMxt", "kN-m"), ("TwrBsMyt", "kN-m"), ("YawBrFxp", "kN"),
-                       ("YawBrMyp", "kN-m"), ("TTDspFA", "m"), ("TTDspSS", "m"), ("TwHt1MLxt", "kN-m"),
-                       ("TwHt1MLyt", "kN-m"), ("TwrClrnc1", "m")]:
+    for name, unit in CHANNELS:
         row = []
-        for table in (ref, rigid, flexible):
+        for table in (ref, *ours):
             if name in table:
                 _, x = window(table, name)
                 row.append((x.mean(), x.std()))
             else:
                 row.append((float("nan"), float("nan")))
         stats[name] = row
-        (rm, rs), (am, as_), (fm, fs) = row
-        print(f"{name:<11}{unit:>6} {rm:10.4g} {am:10.4g} {fm:10.4g} {100 * (fm / rm - 1):+6.1f} | "
-              f"{rs:9.4g} {as_:9.4g} {fs:9.4g} {100 * (fs / rs - 1):+6.1f}")
+        means = "".join(f"{m:11.4g}" for m, _ in row[1:])
+        stds = "".join(f"{s:11.4g}" for _, s in row[1:])
+        print(f"{name:<10}{unit:>5} {row[0][0]:9.4g}{means}{100 * (row[4][0] / row[0][0] - 1):+6.1f} | "
+              f"{row[0][1]:8.4g}{stds}{100 * (row[4][1] / row[0][1] - 1):+6.1f}")
     peaks = {}
     for name in ("TwrBsMxt", "TwrBsMyt", "TTDspFA", "TTDspSS"):
         of = tower_peak(*window(ref, name))
-        ours = tower_peak(*window(flexible, name))
-        peaks[name] = (of, ours)
-        print(f"tower peak {name:<9} OpenFAST {of:.4f} Hz, ours {ours:.4f} Hz ({100 * (ours / of - 1):+.2f} %)")
+        rigid_blades = tower_peak(*window(ours[1], name))
+        rr = tower_peak(*window(ours[3], name))
+        peaks[name] = (of, rigid_blades, rr)
+        print(f"tower peak {name:<9} OpenFAST {of:.4f} Hz; rigid blades {rigid_blades:.4f} Hz ({100 * (rigid_blades / of - 1):+.2f} %), "
+              f"RR blades {rr:.4f} Hz ({100 * (rr / of - 1):+.2f} %)")
 
     failures = []
 
@@ -80,18 +90,29 @@ def main():
         if not ok:
             failures.append(text)
 
-    # The tower's first modes on the floating platform. Side-to-side: the issue's 2 % (measured
-    # +0.64 % TwrBsMxt, +0.53 % TTDspSS). Fore-aft: 5 %, measured −1.98 % (TwrBsMyt) and −2.09 %
-    # (TTDspFA) — our blades are rigid, ElastoDyn's flap (first collective flap ≈ 0.7 Hz) couples
-    # with the fore-aft mode; the issue's 2 % applies once the blades are like-for-like.
-    for name, (of, ours) in peaks.items():
+    # The tower's first modes on the floating platform. Like-for-like (RR blades on the flexible
+    # tower): the issue's 2 % for all four (measured +0.76, +0.04, +0.02, +0.73 %). Rigid blades on
+    # the flexible tower: side-to-side 2 % (measured +0.64, +0.53 %); fore-aft 5 %, measured −1.98 %
+    # (TwrBsMyt) and −2.09 % (TTDspFA): ElastoDyn's flap mode (≈ 0.7 Hz) couples with the fore-aft
+    # mode, which the RR blades bring back.
+    for name, (of, rigid_blades, rr) in peaks.items():
+        check(abs(rr / of - 1.0) < 0.02, f"{name} tower peak, RR blades, within 2 % of OpenFAST's")
         bound = 0.02 if name in ("TwrBsMxt", "TTDspSS") else 0.05
-        check(abs(ours / of - 1.0) < bound, f"{name} tower peak within {100 * bound:.0f} % of OpenFAST's")
-    # Means the tower's elastic model decides, within the issue's 2 % (measured +0.4, +0.1, +0.4,
-    # +0.8, +0.9 %).
+        check(abs(rigid_blades / of - 1.0) < bound, f"{name} tower peak, rigid blades, within {100 * bound:.0f} % of OpenFAST's")
+    # Means the structure decides, within the issue's 2 %. Rigid blades on the flexible tower
+    # (measured +0.4, +0.1, +0.4, +0.8, +0.9 %); RR blades on it (measured +1.3, +0.8, +0.7, +0.6,
+    # +0.9, +0.4, +1.9, +1.0 %).
     for name in ("PtfmSurge", "PtfmPitch", "TwrBsMyt", "TTDspFA", "TwHt1MLyt"):
-        of, ours = stats[name][0][0], stats[name][2][0]
-        check(abs(ours / of - 1.0) < 0.02, f"{name} mean within 2 % of OpenFAST's")
+        of, ours_mean = stats[name][0][0], stats[name][2][0]
+        check(abs(ours_mean / of - 1.0) < 0.02, f"{name} mean, rigid blades, within 2 % of OpenFAST's")
+    for name in ("PtfmSurge", "PtfmPitch", "TwrBsMyt", "TTDspFA", "TwHt1MLyt", "RootMyc1", "RootMxc1", "RootFzc1"):
+        of, ours_mean = stats[name][0][0], stats[name][4][0]
+        check(abs(ours_mean / of - 1.0) < 0.02, f"{name} mean, RR blades, within 2 % of OpenFAST's")
+    # The blades' in-plane motion is gravity and the edge mode: ElastoDyn's own shape and stiffness,
+    # so its standard deviation agrees closely (measured −0.0 %, IPDefl1; RootMxc1 +0.6 %): 2 %.
+    for name in ("IPDefl1", "RootMxc1"):
+        of, rr = stats[name][0][1], stats[name][4][1]
+        check(abs(rr / of - 1.0) < 0.02, f"{name} std, RR blades, within 2 % of OpenFAST's")
     # The side-to-side tower-base moment the rigid tower missed (issue 24: std 0.59× OpenFAST's):
     # the flexible tower must close at least half of that gap (measured 0.58× → 0.80×).
     of, rigid_std, flexible_std = (stats["TwrBsMxt"][k][1] for k in range(3))
