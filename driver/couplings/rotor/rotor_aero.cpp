@@ -141,7 +141,7 @@ void RotorAero::evaluate_rayleigh_ritz(double t, const multibody::Model& model, 
     for (int k = 0; k < nn; ++k) {
       const aero::BladeNodeParams& node = params_.blade[static_cast<std::size_t>(k)];
       const auto c = static_cast<Eigen::Index>(b * nn + k);
-      const multibody::PointKinematics p = multibody::blade_station_point(model, state, chain, b, k);
+      const multibody::PointMotion p = multibody::blade_station_motion(model, state, chain, b, k);
       // The elastic rotation of the section, in g: the deflected section frame relative to f.
       const Mat3 turn = multibody::blade_section_orientation(model, state, chain, b, k) * t_gf.transpose();
       const Vec3 offset = turn * (t_gc * Vec3(node.curve_ac_m, node.sweep_ac_m, 0.0));  // aerodynamic centre from the pitch axis

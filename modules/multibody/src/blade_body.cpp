@@ -24,16 +24,14 @@ PointKinematics blade_station_point(const Model& model, const State& state, cons
   return flexible_body_point(blade_motion(model, state, chain, blade), Vec3(0.0, 0.0, s.span_m), s.shape);
 }
 
-Vec3 blade_rotation_shape(const BladeStation& station, int mode) {
-  return Vec3(-station.slope[mode].y(), station.slope[mode].x(), 0.0);
+PointMotion blade_station_motion(const Model& model, const State& state, const ChainKinematics& chain, int blade,
+                                 int station) {
+  const BladeStation& s = model.rr_blades.stations[station];
+  return flexible_body_point_motion(blade_motion(model, state, chain, blade), Vec3(0.0, 0.0, s.span_m), s.shape);
 }
 
-Jacobian blade_section_rotation_jacobian(const Model& model, const ChainKinematics& chain, int blade, int station) {
-  Jacobian j = chain.rotor.jacobian;
-  for (int m = 0; m < model.rr_blades.mode_count; ++m)
-    j.col(kBlade + blade * kMaxBladeModes + m) += chain.blade_frame_orientation[blade] *
-                                                   blade_rotation_shape(model.rr_blades.stations[station], m);
-  return j;
+Vec3 blade_rotation_shape(const BladeStation& station, int mode) {
+  return Vec3(-station.slope[mode].y(), station.slope[mode].x(), 0.0);
 }
 
 Mat3 blade_section_orientation(const Model& model, const State& state, const ChainKinematics& chain, int blade,

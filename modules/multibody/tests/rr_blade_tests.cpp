@@ -122,6 +122,38 @@ TEST_CASE("a Rayleigh-Ritz blade's shape integrals equal Kane's sums over its ma
   for (int j = 0; j < 3; ++j) CHECK(std::abs(full.modal_N[j] - modal[j]) < 1e-12 * force.norm());
 }
 
+TEST_CASE("blade station loads enter the equations as the stations' virtual work", "[unit][multibody][rr_blades]") {
+  // f(loads) − f(no loads) = Σ_s J_sᵀ F_s + J_θ,sᵀ M_s, with J_s the deflected station's Jacobian and
+  // J_θ,s the section's rotation Jacobian (the hub's plus the modes' rotation shapes), point by point.
+  Params p = oc3_with_rr_blades();
+  set_oc3_flexible_tower(p);
+  const Model m = make_model(p);
+  State s = initial_state(m);
+  s.rotor_azimuth_rad = 0.4;
+  s.tower_deflection_m = {0.3, 0.0, -0.1, 0.0};
+  s.blade_pitch_rad = {0.1, 0.5, -0.2};
+  s.blade_deflection_m = {{{1.0, 0.2, -0.3}, {0.5, -0.1, 0.4}, {-0.8, 0.05, 0.1}}};
+  AppliedLoads loads;
+  loads.blade_station_load_count = m.rr_blades.station_count;
+  GeneralisedVector expected = GeneralisedVector::Zero();
+  ChainKinematics k;
+  chain_kinematics(m, s, k);
+  for (int b = 0; b < 3; ++b)
+    for (int i = 0; i < m.rr_blades.station_count; ++i) {
+      const Vec3 force(1.0e3 * (i + 1), -2.0e2 * b, 50.0 * i), moment(10.0 * b, 30.0, -5.0 * i);
+      loads.blade_station_loads[b][i] = {force, moment};
+      Jacobian turn = k.rotor.jacobian;
+      for (int j = 0; j < 3; ++j)
+        turn.col(kBlade + 3 * b + j) += k.blade_frame_orientation[b] * blade_rotation_shape(m.rr_blades.stations[i], j);
+      expected += blade_station_point(m, s, k, b, i).jacobian.transpose() * force + turn.transpose() * moment;
+    }
+  Evaluation with, without;
+  evaluate(m, s, loads, 0.0, with);
+  evaluate(m, s, AppliedLoads{}, 0.0, without);
+  // Sums in another order: 1e-12 of the largest entry (measured ≈ 1e-15).
+  CHECK((with.force - without.force - expected).norm() < 1e-12 * expected.norm());
+}
+
 TEST_CASE("Rayleigh-Ritz blades carry the rigid blades' mass: the same rotor from their mass moments", "[unit][multibody][rr_blades]") {
   // The rigid-blade model with the RR blade's own mass and moments (ElastoDyn's 17-node rule, the
   // numbers of its summary file) must give the same composite mass, CM and inertia as the

@@ -16,13 +16,13 @@ FlexibleBodyMotion blade_motion(const Model& model, const State& state, const Ch
 PointKinematics blade_station_point(const Model& model, const State& state, const ChainKinematics& chain, int blade,
                                     int station);
 
+// Its position and velocity only (g).
+PointMotion blade_station_motion(const Model& model, const State& state, const ChainKinematics& chain, int blade,
+                                 int station);
+
 // The section's small elastic rotation at station s of blade b, per unit of each mode: the slope
 // turns the section about y_f by φ'_flap and about x_f by −φ'_edge (as the tower's top, in f) [1/m].
 Vec3 blade_rotation_shape(const BladeStation& station, int mode);
-
-// The Jacobian of the section's angular velocity at station s of blade b: the hub's and the modes'
-// rotation shapes (g).
-Jacobian blade_section_rotation_jacobian(const Model& model, const ChainKinematics& chain, int blade, int station);
 
 // The deflected section frame at station s of blade b: T_g,f R_x(θ_x) R_y(θ_y) with
 // (θ_x, θ_y) = Σ_j q_j (rotation shape)_j (g ← section).

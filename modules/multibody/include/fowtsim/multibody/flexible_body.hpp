@@ -64,4 +64,13 @@ FlexibleBodyMomentum flexible_body_momentum(const ShapeIntegrals& in, const Flex
 PointKinematics flexible_body_point(const FlexibleBodyMotion& body, const Vec3& p,
                                     const std::array<Vec3, kMaxBodyModes>& shape);
 
+// The same point's position and velocity only (g): what loads that depend on the motion need, without
+// the Jacobian's cost.
+struct PointMotion {
+  Vec3 position_m = Vec3::Zero();
+  Vec3 velocity_m_s = Vec3::Zero();
+};
+PointMotion flexible_body_point_motion(const FlexibleBodyMotion& body, const Vec3& p,
+                                       const std::array<Vec3, kMaxBodyModes>& shape);
+
 }  // namespace fowtsim::multibody
