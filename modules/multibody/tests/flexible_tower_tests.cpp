@@ -518,7 +518,7 @@ TEST_CASE("initial tower-top deflections go to the first mode of each direction"
 
 TEST_CASE("the tower's shape integrals equal Kane's sums over its mass points", "[unit][multibody][flexible_tower]") {
   // A moving, rotated, deflected and vibrating state: Σ m J_kᵀ J_k and Σ m J_kᵀ (g − a_bias,k) point
-  // by point (tower_point's Jacobian and bias) against add_tower_mass / tower_dalembert, and the
+  // by point (tower_point's Jacobian and bias) against add_flexible_body_mass / flexible_body_dalembert, and the
   // d'Alembert load at an arbitrary u̇ against Σ m (g − a_k) and its moment.
   Params p = oc3_hywind_params();
   set_oc3_flexible_tower(p);
