@@ -48,8 +48,9 @@ TEST_CASE("fowtsim verify wind: IEC σ, generated σ, sampler coherence, TurbSim
   check_case("wind", 8, 7);
 }
 
-TEST_CASE("fowtsim verify multibody: precession, heave period, conservation, OC3 masses", "[verification][multibody]") {
-  check_case("multibody", 10, 0);
+TEST_CASE("fowtsim verify multibody: precession, heave period, conservation, OC3 masses, RR blades", "[verification][multibody]") {
+  // 10 rigid-chain rows, then the RR blade's rotating frequencies and the flexible turbine's 3 invariants.
+  check_case("multibody", 14, 0);
 }
 
 TEST_CASE("fowtsim verify control: closed-loop pitch, torque schedule, speed filter", "[verification][control]") {

@@ -61,7 +61,8 @@ StructuralMode mode_of(const std::complex<double>& lambda, const Eigen::VectorXc
 ModesResult floating_modes(const std::filesystem::path& deck_path, const std::vector<std::string>& settings) {
   const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), deck_path, settings);
   FloatingScene scene(deck);
-  const FloatingState state = scene.make_state();
+  FloatingState state = scene.make_state();
+  scene.settle_elastic(0.0, state);  // about the tower's and blades' static deflection
   const Eigen::MatrixXd a = scene.linearised_system(0.0, state);
   const std::vector<int> dofs = scene.coordinates();
   const int n = static_cast<int>(dofs.size());

@@ -278,6 +278,60 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
   return a;
 }
 
+void FloatingScene::settle_elastic(double t, FloatingState& s) {
+  std::vector<int> elastic;
+  for (const int k : coordinates())
+    if (k >= multibody::kTower) elastic.push_back(k);
+  if (elastic.empty()) return;
+  const auto n = static_cast<Eigen::Index>(elastic.size());
+  auto coordinate = [&](multibody::State& b, int k) -> double& {
+    if (k < multibody::kBlade) return b.tower_deflection_m[k - multibody::kTower];
+    return b.blade_deflection_m[(k - multibody::kBlade) / multibody::kMaxBladeModes][(k - multibody::kBlade) % multibody::kMaxBladeModes];
+  };
+  FloatingState work = s;
+  auto forces = [&](const multibody::State& body) {
+    work.sea = s.sea;
+    if (work.aero) *work.aero = *s.aero;
+    stage_loads_->act_on(work.held, work.sea, work.aero ? &*work.aero : nullptr, nullptr);
+    multibody::AppliedLoads loads;
+    stage_loads_->loads(t, body, loads);
+    multibody::evaluate(model_, body, loads, t, evaluation_);
+    Eigen::VectorXd f(n);
+    for (Eigen::Index i = 0; i < n; ++i) f[i] = evaluation_.force[elastic[static_cast<std::size_t>(i)]];
+    return f;
+  };
+  multibody::State body = s.body;
+  body.velocity_m_s.setZero();
+  body.angular_velocity_rad_s.setZero();
+  body.rotor_speed_rad_s = body.generator_speed_rad_s = 0.0;
+  for (const int k : elastic) {
+    coordinate(body, k) = 0.0;
+    if (k < multibody::kBlade) body.tower_deflection_rate_m_s[k - multibody::kTower] = 0.0;
+    else body.blade_deflection_rate_m_s[(k - multibody::kBlade) / multibody::kMaxBladeModes][(k - multibody::kBlade) % multibody::kMaxBladeModes] = 0.0;
+  }
+  // The elastic forces are linear in q but for the inertia's q² terms and the loads' dependence on
+  // the deflection: a few Newton steps; converged when the step is below 1e-9 m.
+  constexpr double h = 1e-4;  // [m], as the linearisation
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    const Eigen::VectorXd f = forces(body);
+    Eigen::MatrixXd jacobian(n, n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+      multibody::State plus = body, minus = body;
+      coordinate(plus, elastic[static_cast<std::size_t>(j)]) += h;
+      coordinate(minus, elastic[static_cast<std::size_t>(j)]) -= h;
+      jacobian.col(j) = (forces(plus) - forces(minus)) / (2.0 * h);
+    }
+    const Eigen::VectorXd step = jacobian.partialPivLu().solve(-f);
+    for (Eigen::Index j = 0; j < n; ++j) coordinate(body, elastic[static_cast<std::size_t>(j)]) += step[j];
+    if (step.cwiseAbs().maxCoeff() < 1e-9) {
+      for (const int k : elastic) coordinate(s.body, k) = coordinate(body, k);
+      return;
+    }
+  }
+  throw NumericalError({"modes", t, "static deflection of the tower and blades", "check the deck's stiffness and loads"},
+                       "Newton's method did not converge in 20 iterations");
+}
+
 std::vector<int> FloatingScene::coordinates() const {
   std::vector<int> dofs;
   for (int k = 0; k < model_.dof_count; ++k)

@@ -93,6 +93,11 @@ class FloatingScene {
   // memory is held (potential flow enters through A(∞)). The flexible blades' own states are not in
   // x: InputError with them.
   Eigen::MatrixXd linearised_system(double t, const FloatingState& s);
+  // The flexible tower's and Rayleigh–Ritz blades' static deflection in `s` at time t: their rows of
+  // the generalised forces vanish, f_e(q_e) = 0, with every speed zero and the rigid coordinates
+  // where they are (gravity, the sea and the aerodynamics of that state), by Newton's method on a
+  // central-difference Jacobian. NumericalError if it does not converge in 20 iterations.
+  void settle_elastic(double t, FloatingState& s);
   // The multibody DOFs (model.hpp Dof indices) the linearisation's coordinates are, in order.
   std::vector<int> coordinates() const;
   int tower_fore_aft_modes() const { return model_.flexible_tower.fore_aft_count; }

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
+
 #include "fowtsim/core/rotation.hpp"
 #include "fowtsim/multibody/multibody.hpp"
 #include "fowtsim/multibody/oc3.hpp"
@@ -138,6 +140,75 @@ double heave_free_decay_period(double added_mass_kg) {
   }
   if (crossings.size() < 2) return std::numeric_limits<double>::quiet_NaN();
   return (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+}
+
+BladeRows rr_blade_rows(Params p, double rpm) {
+  p.rotor.precone_deg = 0.0;
+  p.nacelle.shaft_tilt_deg = 0.0;
+  p.dofs.platform_free = {false, false, false, false, false, false};
+  p.dofs.rotor = RotorSpin::held;
+  p.initial_conditions.rotor_speed_rpm = rpm;
+  const Model m = make_model(p);
+  const State s0 = initial_state(m);
+  AppliedLoads off;
+  off.gravity = false;
+  Evaluation e;
+  evaluate(m, s0, off, 0.0, e);
+  BladeRows out;
+  out.mass_kg = e.mass.block<3, 3>(kBlade, kBlade);
+  Eigen::Matrix3d stiffness;
+  const double h = 1e-4;  // [m]: f is linear in q but for the inertia's O(q²) terms, which central differences cancel
+  for (int c = 0; c < 3; ++c) {
+    State plus = s0, minus = s0;
+    plus.blade_deflection_m[0][c] += h;
+    minus.blade_deflection_m[0][c] -= h;
+    Evaluation ep, em;
+    evaluate(m, plus, off, 0.0, ep);
+    evaluate(m, minus, off, 0.0, em);
+    stiffness.col(c) = -(ep.force.segment<3>(kBlade) - em.force.segment<3>(kBlade)) / (2.0 * h);
+  }
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (stiffness + stiffness.transpose()), out.mass_kg,
+                                                                      Eigen::EigenvaluesOnly);
+  out.frequencies_hz = eig.eigenvalues().cwiseSqrt() / (2.0 * std::numbers::pi);
+  return out;
+}
+
+Drift rr_free_run_drift(Params p, double seconds, double dt_s, bool gravity) {
+  for (double& d : p.tower.fore_aft_damping_percent) d = 0.0;
+  for (double& d : p.tower.side_side_damping_percent) d = 0.0;
+  p.rotor.rayleigh_ritz_blade->flap_damping_percent = {0.0, 0.0};
+  p.rotor.rayleigh_ritz_blade->edge_damping_percent = 0.0;
+  p.drivetrain.torsional_damping_N_m_s_rad = 0.0;
+  p.initial_conditions.platform_angular_velocity_deg_s = {1.0, -2.0, 0.5};
+  if (p.tower.flexible) p.initial_conditions.tower_top_deflection_m = {0.3, -0.1};
+  const Model m = make_model(p);
+  State s = initial_state(m);
+  s.blade_deflection_m[0] = {1.0, 0.0, 0.2};
+  s.blade_deflection_m[2] = {-0.5, 0.1, -0.3};
+  s.blade_pitch_rad = {0.1, 0.0, 0.3};
+  class Loads : public LoadProvider {
+   public:
+    explicit Loads(bool g) : gravity_(g) {}
+    void loads(double, const State&, AppliedLoads& out) override { out.gravity = gravity_; }
+
+   private:
+    bool gravity_;
+  } loads(gravity);
+  const Invariants start = invariants(m, s, gravity);
+  // The motion's energy: kinetic + strain (+ weight) above the undeflected state at rest.
+  const double scale = start.kinetic_energy_J + std::abs(start.potential_energy_J - invariants(m, initial_state(m), gravity).potential_energy_J);
+  const double e0 = start.kinetic_energy_J + start.potential_energy_J;
+  Drift d;
+  const int steps = static_cast<int>(std::lround(seconds / dt_s));
+  for (int i = 0; i < steps; ++i) {
+    Multibody::advance(m, loads, i * dt_s, dt_s, s);
+    const Invariants now = invariants(m, s, gravity);
+    d.energy = std::max(d.energy, std::abs(now.kinetic_energy_J + now.potential_energy_J - e0) / scale);
+    d.angular = std::max(d.angular, (now.angular_momentum_N_m_s - start.angular_momentum_N_m_s).norm() /
+                                        start.angular_momentum_N_m_s.norm());
+    d.linear = std::max(d.linear, (now.linear_momentum_N_s - start.linear_momentum_N_s).norm() / start.linear_momentum_N_s.norm());
+  }
+  return d;
 }
 
 }  // namespace fowtsim::multibody::verification

@@ -4,6 +4,7 @@
 // of a gyrostat, and the heave free-decay period on constant springs. The analytic answers are
 // computed here with the runs; published values and their sources stay with the callers.
 #include "fowtsim/core/types.hpp"
+#include "fowtsim/multibody/params.hpp"
 
 namespace fowtsim::multibody::verification {
 
@@ -36,5 +37,22 @@ Precession gyroscopic_precession(double rpm, double moment_N_m);
 // `added_mass_kg`, RK4 at 0.02 s: the mean spacing of the first six upward zero crossings of z(t)
 // (linear interpolation). NaN when fewer than two crossings occur within 300 s.
 double heave_free_decay_period(double added_mass_kg);
+
+// Rayleigh–Ritz blades (`params` with a rayleigh_ritz_blade): blade 1's three frequencies [Hz],
+// ascending, on the hub held spinning at `rpm`, platform held, precone, shaft tilt and gravity off
+// — the isolated blade on a spinning hub — from the central-difference linearisation of its rows
+// of the equations of motion (K from f, M from the mass matrix). Also its mass block [kg].
+struct BladeRows {
+  Eigen::Vector3d frequencies_hz = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d mass_kg = Eigen::Matrix3d::Zero();
+};
+BladeRows rr_blade_rows(Params params, double rpm);
+
+// The free floating turbine of `params` (flexible tower and RR blades as the caller sets them)
+// with every damping off (tower, blades, drivetrain), parked rotor free to turn, platform tumbling
+// at (1, −2, 0.5) °/s, tower top deflected (0.3, −0.1) m, blades 1 and 3 deflected and pitched,
+// for `seconds` at RK4 step `dt_s`: the largest energy drift relative to the motion's energy
+// (kinetic + strain), and the momenta's (gravity off for those; `gravity` sets the energy run).
+Drift rr_free_run_drift(Params params, double seconds, double dt_s, bool gravity);
 
 }  // namespace fowtsim::multibody::verification
