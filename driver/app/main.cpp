@@ -205,8 +205,8 @@ int main(int argc, char** argv) {
   std::string modes_deck, modes_output;
   std::vector<std::string> modes_settings;
   auto* modes = app.add_subcommand("modes", "natural frequencies, damping and mode shapes of a floating-turbine deck, "
-                                            "linearised about its initial state");
-  modes->add_option("deck", modes_deck, "floating-turbine deck (rigid blades)")->required()->check(CLI::ExistingFile);
+                                            "linearised about its initial state (tower and blades at their static deflection)");
+  modes->add_option("deck", modes_deck, "floating-turbine deck (rigid or Rayleigh-Ritz blades)")->required()->check(CLI::ExistingFile);
   modes->add_option("--set", modes_settings, "set a deck key, as for run")->allow_extra_args(false);
   modes->add_option("-o,--output", modes_output, "also write the frequencies, damping and shapes to OUT.h5 or OUT.csv");
   auto* turbulence = app.add_subcommand("turbulence", "generate a turbulent wind field (IEC Kaimal) to .bts and .h5");

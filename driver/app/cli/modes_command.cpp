@@ -12,7 +12,7 @@
 namespace fowtsim::driver {
 namespace {
 
-constexpr const char* kAbout = "linearised about its initial state (controller demands and radiation memory held)";
+constexpr const char* kAbout = "linearised about its initial state, tower and blades at their static deflection (controller demands and radiation memory held)";
 
 double period_of(const StructuralMode& m) { return m.frequency_hz > 0.0 ? 1.0 / m.frequency_hz : INFINITY; }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The modes behind `fowtsim modes DECK` (driver/app/cli/modes_command.hpp): natural frequencies, damping ratios and mode shapes of a floating-turbine
-// deck's structure, linearised about its initial state (FloatingScene::linearised_system) — the
+// deck's structure, linearised about its initial state with the flexible tower and Rayleigh–Ritz
+// blades at their static deflection there (FloatingScene::settle_elastic, linearised_system) — the
 // eigenvalues λ = −ζω ± iω√(1−ζ²) of ẋ = A x. Parked or not, the rotor is taken as it is at t = 0
 // (no multi-blade transformation), the controller's demands held.
 #include <filesystem>
