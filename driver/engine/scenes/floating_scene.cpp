@@ -334,8 +334,8 @@ void FloatingScene::settle_elastic(double t, FloatingState& s) {
 
 std::vector<int> FloatingScene::coordinates() const {
   std::vector<int> dofs;
-  for (int k = 0; k < model_.dof_count; ++k)
-    if (multibody::dof_active(model_, k)) dofs.push_back(k);
+  for (int k = 0; k < model_.dof_count; ++k)  // held DOFs are not coordinates: they do not move
+    if (multibody::dof_active(model_, k) && !model_.acceleration_given[k]) dofs.push_back(k);
   return dofs;
 }
 

@@ -98,7 +98,8 @@ class FloatingScene {
   // where they are (gravity, the sea and the aerodynamics of that state), by Newton's method on a
   // central-difference Jacobian. NumericalError if it does not converge in 20 iterations.
   void settle_elastic(double t, FloatingState& s);
-  // The multibody DOFs (model.hpp Dof indices) the linearisation's coordinates are, in order.
+  // The multibody DOFs (model.hpp Dof indices) the linearisation's coordinates are, in order: the
+  // model's DOFs less the held ones.
   std::vector<int> coordinates() const;
   int tower_fore_aft_modes() const { return model_.flexible_tower.fore_aft_count; }
   const wind::WindField* wind() const { return rotor_ ? &rotor_->wind() : nullptr; }
