@@ -118,7 +118,11 @@ const DeckSection<multibody::Params>& structure_section() {
                 })
         .key("rayleigh_ritz_blade_nodes", Schema::integer().at_least(1).default_value(17).doc("BldNodes: the Rayleigh-Ritz blades' "
                                                                                                "integration nodes (ElastoDyn's midpoint rule)"),
-             &RotorParams::rayleigh_ritz_blade_nodes);
+             &RotorParams::rayleigh_ritz_blade_nodes)
+        .key("rayleigh_ritz_blade_gauges", Schema::sequence(Schema::number().at_least(0.0).less_than(1.0)).max_items(9).optional()
+                                               .doc("NBlGages/BldGagNd: span fractions x/L from the root for the Spn<k>FL/ML{x,y,z}b<b> "
+                                                    "channels (Rayleigh-Ritz blades)"),
+             &RotorParams::blade_gauge_fractions);
     DeckSection<DrivetrainParams> drivetrain;
     drivetrain.key("gearbox_ratio", Schema::number().greater_than(0.0).doc("GBRatio"), &DrivetrainParams::gearbox_ratio)
         .key("generator_inertia_kg_m2", non_negative("GenIner (HSS)"), &DrivetrainParams::generator_inertia_kg_m2)

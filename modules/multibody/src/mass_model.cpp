@@ -1,4 +1,5 @@
 // make_model(): validation of Params and the mass properties of the rigid bodies.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -204,6 +205,8 @@ void validate(const Params& p) {
                 r.blade_mass_kg * r.blade_second_mass_moment_kg_m2 * (1.0 + 1e-12),
             "rotor.blade_first_mass_moment_kg_m", r.blade_first_mass_moment_kg_m,
             "first² <= mass · second moment (a real mass distribution)");
+  if (!r.rayleigh_ritz_blade && !r.blade_gauge_fractions.empty())
+    e.add("structure.rotor.rayleigh_ritz_blade_gauges: needs structure.rotor.rayleigh_ritz_blade_file (Rayleigh-Ritz blades)");
   if (r.rayleigh_ritz_blade) {
     const flexbody::ElastoDynBlade& b = *r.rayleigh_ritz_blade;
     e.require(!r.flexible_blades, "rotor.rayleigh_ritz_blade", 1.0, "not with flexible_blades (one blade model)");
@@ -214,6 +217,11 @@ void validate(const Params& p) {
     e.require(r.rayleigh_ritz_blade_nodes >= 1, "rotor.rayleigh_ritz_blade_nodes", r.rayleigh_ritz_blade_nodes, ">= 1");
     e.require(r.blade_station_spans_m.size() < static_cast<std::size_t>(kMaxBladeStations), "rotor.blade_station_spans_m",
               static_cast<double>(r.blade_station_spans_m.size()), "fewer than " + std::to_string(kMaxBladeStations) + " stations");
+    e.require(r.blade_gauge_fractions.size() <= static_cast<std::size_t>(kMaxBladeGauges), "rotor.rayleigh_ritz_blade_gauges",
+              static_cast<double>(r.blade_gauge_fractions.size()), "at most " + std::to_string(kMaxBladeGauges) + " gauges");
+    for (std::size_t i = 0; i < r.blade_gauge_fractions.size(); ++i)
+      e.require(r.blade_gauge_fractions[i] >= 0.0 && r.blade_gauge_fractions[i] < 1.0,
+                "rotor.rayleigh_ritz_blade_gauges[" + std::to_string(i) + "]", r.blade_gauge_fractions[i], "0 <= x/L < 1");
     const double length = r.tip_radius_m - r.hub_radius_m;
     for (std::size_t i = 0; i < r.blade_station_spans_m.size(); ++i) {
       const double x = r.blade_station_spans_m[i];
@@ -380,16 +388,42 @@ RayleighRitzBlades make_rr_blades(const RotorParams& r) {
   out.stiffness = matrices.stiffness;
   out.centrifugal_stiffness = matrices.centrifugal;
   out.damping = elastodyn_damping(blade, matrices);
-  BladeRule at;
-  at.kind = BladeRule::Kind::Spans;
-  at.spans = r.blade_station_spans_m;
-  at.spans.push_back(blade.length());
-  const SampledBlade stations = sample_blade(blade, at);
-  out.station_count = static_cast<int>(at.spans.size());
-  for (int k = 0; k < out.station_count; ++k) {
-    out.stations[k].span_m = at.spans[static_cast<std::size_t>(k)];
-    out.stations[k].shape = shape_at(stations, k, stations.u_flap, stations.u_edge);
-    out.stations[k].slope = shape_at(stations, k, stations.nu_flap, stations.nu_edge);
+  // Shapes and slopes at given spans.
+  auto stations_at = [&](const std::vector<double>& spans) {
+    BladeRule at;
+    at.kind = BladeRule::Kind::Spans;
+    at.spans = spans;
+    const SampledBlade sampled_at = sample_blade(blade, at);
+    std::vector<BladeStation> list(spans.size());
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+      const auto i = static_cast<Eigen::Index>(k);
+      list[k] = {spans[k], shape_at(sampled_at, i, sampled_at.u_flap, sampled_at.u_edge),
+                 shape_at(sampled_at, i, sampled_at.nu_flap, sampled_at.nu_edge)};
+    }
+    return list;
+  };
+  std::vector<double> spans = r.blade_station_spans_m;
+  spans.push_back(blade.length());
+  const std::vector<BladeStation> stations = stations_at(spans);
+  out.station_count = static_cast<int>(stations.size());
+  std::copy(stations.begin(), stations.end(), out.stations.begin());
+  // Gauges: the mass beyond x_g on the same midpoint rule as the body's integrals (so a gauge at the
+  // root carries exactly the blade's mass): each element's part beyond x_g at that part's middle.
+  out.gauge_count = static_cast<int>(r.blade_gauge_fractions.size());
+  for (int g = 0; g < out.gauge_count; ++g) {
+    const double x_g = r.blade_gauge_fractions[static_cast<std::size_t>(g)] * blade.length();
+    const double h = blade.length() / r.rayleigh_ritz_blade_nodes;
+    std::vector<double> at{x_g}, mass;
+    for (const BladePoint& p : sampled.points) {
+      const double start = std::max(p.x - 0.5 * h, x_g), end = p.x + 0.5 * h;
+      if (end <= start) continue;
+      at.push_back(0.5 * (start + end));
+      mass.push_back(p.m * (end - start));  // the element's mass per length, as the body's rule takes it
+    }
+    const std::vector<BladeStation> points = stations_at(at);
+    out.gauges[g].station = points[0];
+    for (std::size_t k = 1; k < points.size(); ++k)
+      out.gauges[g].outboard.add_point(mass[k - 1], Vec3(0.0, 0.0, points[k].span_m), points[k].shape, kBladeShapes);
   }
   return out;
 }

@@ -207,6 +207,29 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
     c[n++] = tip_f.y();  // TipDyb
     c[n++] = tip_c.x();  // OoPDefl
     c[n++] = tip_c.y();  // IPDefl
+    // Gauges (ElastoDyn's Spn{k}FL/ML{x,y,z}b): the load of the blade beyond the gauge on the part
+    // inboard — the d'Alembert load of the mass beyond it and the station loads beyond it — about the
+    // deflected gauge point, in the local (deflected) section frame there.
+    const FlexibleBodyMotion body = blade_motion(model, state, k, b);
+    const Vec3& root = k.blade_root[b].position_m;
+    for (int g = 0; g < rr.gauge_count; ++g) {
+      const BladeGauge& gauge = rr.gauges[g];
+      const FlexibleBodyDAlembert d = flexible_body_dalembert(gauge.outboard, body, udot, gravity);
+      Vec3 force = d.force_N, moment = d.moment_N_m;  // about the root
+      for (int s = 0; s < loads.blade_station_load_count; ++s) {
+        if (rr.stations[s].span_m < gauge.station.span_m) continue;
+        const BladeStationLoad& at = loads.blade_station_loads[b][s];
+        force += at.force_N;
+        moment += (blade_station_point(model, state, k, b, s).position_m - root).cross(at.force_N) + at.moment_N_m;
+      }
+      const Vec3 point = flexible_body_point_motion(body, Vec3(0.0, 0.0, gauge.station.span_m), gauge.station.shape).position_m;
+      moment += (root - point).cross(force);
+      Vec3 theta = Vec3::Zero();
+      for (int j = 0; j < rr.mode_count; ++j) theta += state.blade_deflection_m[b][j] * blade_rotation_shape(gauge.station, j);
+      const Mat3 local = t_gf * rotation_x(theta.x()) * rotation_y(theta.y());
+      put3(local.transpose() * force, 1e-3);   // Spn{k}FL{x,y,z}b (kN)
+      put3(local.transpose() * moment, 1e-3);  // Spn{k}ML{x,y,z}b (kN·m)
+    }
   }
   return out;
 }
@@ -304,6 +327,19 @@ std::vector<ChannelInfo> Multibody::channels(const Model& model) {
                                             std::string(name + 4) + " axis", m});
       c.push_back({"OoPDefl" + blade, "m", "blade " + blade + " out-of-plane tip deflection (= TipDxc)", m});
       c.push_back({"IPDefl" + blade, "m", "blade " + blade + " in-plane tip deflection (= TipDyc)", m});
+      for (int g = 0; g < model.rr_blades.gauge_count; ++g) {
+        std::ostringstream x;
+        x << model.rr_blades.gauges[g].station.span_m;
+        const std::string gauge = std::to_string(g + 1);
+        for (int i = 0; i < 3; ++i)
+          c.push_back({"Spn" + gauge + "FL" + axes[i] + "b" + blade, "kN",
+                       "blade " + blade + " local force at gauge " + gauge + " (" + x.str() + " m from the root; the blade beyond "
+                       "on the part inboard) along " + axes[i] + " of the local deflected section frame", m});
+        for (int i = 0; i < 3; ++i)
+          c.push_back({"Spn" + gauge + "ML" + axes[i] + "b" + blade, "kN-m",
+                       "blade " + blade + " local moment at gauge " + gauge + " (" + x.str() + " m from the root; about the "
+                       "deflected gauge point) about " + axes[i] + " of the local deflected section frame", m});
+      }
     }
   }
   return c;

@@ -52,8 +52,9 @@ TEST_CASE("channels() and the Output channel array agree in size", "[unit][multi
   set_oc3_flexible_tower(p);
   p.tower.gauge_heights_m = {0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 77.0};
   p.rotor.rayleigh_ritz_blade = flexbody::read_elastodyn_blade(FOWTSIM_SOURCE_DIR "/inputs/nrel5mw/blade_elastodyn.yaml");
+  p.rotor.blade_gauge_fractions = {0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8};
   CHECK(Multibody::channels(make_model(p)).size() ==
-        static_cast<std::size_t>(kMaxChannelCount));  // every capacity used: 9 gauges, 3 clearances, 3 RR blades
+        static_cast<std::size_t>(kMaxChannelCount));  // every capacity used: 9 tower gauges, 3 clearances, 3 RR blades with 9 gauges
 }
 
 TEST_CASE("a flexible-tower step with Rayleigh-Ritz blades and its outputs allocate nothing",
@@ -62,6 +63,7 @@ TEST_CASE("a flexible-tower step with Rayleigh-Ritz blades and its outputs alloc
   set_oc3_flexible_tower(p);
   p.rotor.rayleigh_ritz_blade = flexbody::read_elastodyn_blade(FOWTSIM_SOURCE_DIR "/inputs/nrel5mw/blade_elastodyn.yaml");
   p.rotor.blade_station_spans_m = {10.0, 30.0, 50.0};
+  p.rotor.blade_gauge_fractions = {0.3};
   p.nacelle.yaw_prescribed = true;
   p.initial_conditions.rotor_speed_rpm = 12.1;
   p.initial_conditions.tower_top_deflection_m = {0.2, -0.05};

@@ -241,3 +241,68 @@ TEST_CASE("Rayleigh-Ritz blade channels: root loads are the blade's on the hub, 
   CHECK(std::abs(flap1.x() - 1.0) < 0.05);  // the tip's twist is ≈ 0 (0.106°), the twisted shape ≈ 1 along x
 }
 
+
+TEST_CASE("Rayleigh-Ritz blade gauges: the blade beyond, at the root the root load", "[unit][multibody][rr_blades]") {
+  // Gauges at the root and at the 5th of ElastoDyn's 17 element boundaries (x/L = 5/17), a pitched,
+  // deflected, vibrating blade 1 with loads at every station: Spn1 equals RootF/M{x,y,z}b1 (the local
+  // frame at the root is b); Spn2 equals the sum over the node masses and station loads beyond
+  // 5/17 L by points (the stations are the node midpoints), about the deflected gauge point, in the
+  // local section frame (slopes from the deck's shapes).
+  Params p = oc3_with_rr_blades();
+  p.rotor.blade_gauge_fractions = {0.0, 5.0 / 17.0};
+  const Model m = make_model(p);
+  State s = initial_state(m);
+  s.rotor_speed_rad_s = 1.2;
+  s.blade_pitch_rad[0] = 0.25;
+  s.blade_deflection_m[0] = {1.2, -0.1, 0.3};
+  s.blade_deflection_rate_m_s[0] = {0.4, 0.2, -0.5};
+  AppliedLoads loads;
+  loads.blade_station_load_count = m.rr_blades.station_count;
+  for (int b = 0; b < 3; ++b)
+    for (int i = 0; i < m.rr_blades.station_count; ++i)
+      loads.blade_station_loads[b][i] = {Vec3(2.0e3 + 100.0 * i, -300.0, 20.0 * i), Vec3(0.0, 40.0, 5.0 * i)};
+  const Output out = Multibody::outputs(m, loads, s);
+  const auto channels = Multibody::channels(m);
+  auto at = [&](const std::string& name) {
+    for (std::size_t j = 0; j < channels.size(); ++j)
+      if (channels[j].name == name) return out.channels[j];
+    FAIL("no channel " << name);
+    return 0.0;
+  };
+  for (const char* axis : {"x", "y", "z"}) {
+    // Both from the same integrals and loads in another order: round-off.
+    CHECK(at(std::string("Spn1FL") + axis + "b1") == Approx(at(std::string("RootF") + axis + "b1")).epsilon(1e-12).margin(1e-9));
+    CHECK(at(std::string("Spn1ML") + axis + "b1") == Approx(at(std::string("RootM") + axis + "b1")).epsilon(1e-12).margin(1e-9));
+  }
+  Evaluation e;
+  evaluate(m, s, loads, 0.0, e);
+  const ChainKinematics& k = e.kinematics;
+  flexbody::BladeRule rule;
+  rule.kind = flexbody::BladeRule::Kind::ElastoDynNodes;
+  const std::vector<flexbody::BladePoint> points = flexbody::blade_points(*p.rotor.rayleigh_ritz_blade, rule);
+  const Vec3 g(0.0, 0.0, -p.gravity_m_s2);
+  const BladeGauge& gauge = m.rr_blades.gauges[1];
+  const Vec3 gauge_point =
+      flexible_body_point_motion(blade_motion(m, s, k, 0), Vec3(0.0, 0.0, gauge.station.span_m), gauge.station.shape).position_m;
+  Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+  for (int i = 5; i < 17; ++i) {
+    const PointKinematics q = blade_station_point(m, s, k, 0, i);
+    const Vec3 f = points[static_cast<std::size_t>(i)].w * points[static_cast<std::size_t>(i)].m * (g - acceleration(q, e.acceleration)) +
+                   loads.blade_station_loads[0][i].force_N;
+    force += f;
+    moment += (q.position_m - gauge_point).cross(f) + loads.blade_station_loads[0][i].moment_N_m;
+  }
+  const BladeStationLoad& tip = loads.blade_station_loads[0][17];
+  force += tip.force_N;
+  moment += (blade_station_point(m, s, k, 0, 17).position_m - gauge_point).cross(tip.force_N) + tip.moment_N_m;
+  Vec3 theta = Vec3::Zero();
+  for (int j = 0; j < 3; ++j) theta += s.blade_deflection_m[0][j] * blade_rotation_shape(gauge.station, j);
+  const Mat3 local = k.blade_frame_orientation[0] * rotation_x(theta.x()) * rotation_y(theta.y());
+  const Vec3 f_local = 1e-3 * local.transpose() * force, m_local = 1e-3 * local.transpose() * moment;
+  WARN("gauge at 5/17 L: F " << f_local.transpose() << " kN, M " << m_local.transpose() << " kN·m");
+  for (int a = 0; a < 3; ++a) {
+    // ~15 terms in two orders: 1e-12 of the vector's size.
+    CHECK(std::abs(at(std::string("Spn2FL") + "xyz"[a] + "b1") - f_local[a]) < 1e-12 * f_local.norm());
+    CHECK(std::abs(at(std::string("Spn2ML") + "xyz"[a] + "b1") - m_local[a]) < 1e-12 * m_local.norm());
+  }
+}

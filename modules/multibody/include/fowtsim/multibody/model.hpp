@@ -123,6 +123,13 @@ struct BladeStation {
   std::array<Vec3, kMaxBodyModes> shape{};                // φ_j(x) in f [-]
   std::array<Vec3, kMaxBodyModes> slope{};                // φ_j'(x) in f [1/m]
 };
+// A Rayleigh–Ritz blade gauge: its station and the blade mass outboard of it as shape integrals
+// (in the blade's frame, from the root), so flexible_body_dalembert() gives its d'Alembert load.
+inline constexpr int kMaxBladeGauges = 9;  // ElastoDyn's NBlGages ≤ 9
+struct BladeGauge {
+  BladeStation station;                   // x of the gauge, shapes and slopes there
+  ShapeIntegrals outboard;                // the blade mass beyond x
+};
 struct RayleighRitzBlades {
   int mode_count = 0;                                     // 0: rigid or MBBT blades; else 3
   double length_m = 0.0;                                  // TipRad − HubRad [m]
@@ -132,6 +139,8 @@ struct RayleighRitzBlades {
   Mat3 damping = Mat3::Zero();                            // ElastoDyn's BldFlDmp/BldEdDmp [N·s/m]
   std::array<BladeStation, kMaxBladeStations> stations{}; // Params' spans, then the tip
   int station_count = 0;
+  std::array<BladeGauge, kMaxBladeGauges> gauges{};       // the first gauge_count (RotorParams::blade_gauge_fractions)
+  int gauge_count = 0;
 };
 
 struct Model {

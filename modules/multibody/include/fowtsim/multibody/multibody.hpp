@@ -21,10 +21,12 @@ inline constexpr int kChannelCount = 42;       // channels of the rigid-tower mo
 inline constexpr int kTowerChannelCount = 2;   // TTDspFA, TTDspSS, appended with a flexible tower
 inline constexpr int kGaugeChannelCount = 8;   // TwHt{k}FL{x,y,z}t, ML{x,y,z}t, TD{x,y}t per tower gauge, appended next
 // Then TwrClrnc1 … B with rigid or Rayleigh–Ritz blades (the MBBT blades' tips are not the multibody's),
-// then per Rayleigh–Ritz blade RootF/M{x,y,z}{c,b}, TipD{x,y}{c,b}, OoPDefl, IPDefl.
+// then per Rayleigh–Ritz blade RootF/M{x,y,z}{c,b}, TipD{x,y}{c,b}, OoPDefl, IPDefl and its gauges'
+// Spn{k}FL/ML{x,y,z}b.
 inline constexpr int kRrBladeChannelCount = 18;
+inline constexpr int kBladeGaugeChannelCount = 6;
 inline constexpr int kMaxChannelCount = kChannelCount + kTowerChannelCount + kMaxTowerGauges * kGaugeChannelCount + kMaxBlades +
-                                        kMaxBlades * kRrBladeChannelCount;
+                                        kMaxBlades * (kRrBladeChannelCount + kMaxBladeGauges * kBladeGaugeChannelCount);
 
 struct Output {
   GeneralisedVector acceleration = GeneralisedVector::Zero();  // u̇ (model.hpp Dof order) [m/s², rad/s²]

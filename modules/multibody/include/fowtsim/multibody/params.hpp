@@ -90,6 +90,9 @@ struct RotorParams {
   // Spans from the root where the blades' points are wanted (the aerodynamic nodes), ascending;
   // the tip is added as the last station [m].
   std::vector<double> blade_station_spans_m;
+  // Rayleigh–Ritz blade gauges (ElastoDyn's NBlGages/BldGagNd, ≤ 9): span fractions x/L from the
+  // root, for the Spn{k}FL/ML{x,y,z}b{b} channels [-].
+  std::vector<double> blade_gauge_fractions;
 };
 
 struct DrivetrainParams {
