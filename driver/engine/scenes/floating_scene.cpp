@@ -448,7 +448,7 @@ void FloatingScene::finish(double t, FloatingState& s) const {
 }
 
 std::string FloatingScene::coupling_description() const {
-  std::vector<std::string> parts{"rigid multibody"};
+  std::vector<std::string> parts{model_.flexible_tower.mode_count > 0 ? "multibody with the flexible tower" : "multibody, rigid tower"};
   if (!sea_description_.empty()) parts.push_back(sea_description_);
   if (blades_) parts.push_back(blades_->description() + (rotor_ ? ", BEM on the deflected blades" : ", no aerodynamics"));
   else if (rotor_ && model_.rr_blades.mode_count > 0) parts.push_back("Rayleigh-Ritz blades with BEM on the deflected blades at every RK4 stage");

@@ -23,6 +23,7 @@ std::vector<VerificationRow> verify_beam_frequencies(std::FILE* out);
 void bench_beam(std::FILE* out);
 void bench_aero(std::FILE* out);       // bench_turbine.cpp
 void bench_multibody(std::FILE* out);
+void bench_startup(std::FILE* out);  // bench_startup.cpp
 void bench_turbine(std::FILE* out);    // bench_flexible_turbine.cpp
 void bench_stability(std::FILE* out);  // bench_stability.cpp
 std::vector<VerificationRow> verify_sea(std::FILE* out);  // verify_sea.cpp
@@ -105,7 +106,9 @@ std::filesystem::path default_shared_dir() {
   return (root.parent_path() / "shared").lexically_normal();
 }
 
-std::vector<std::string> benchmark_case_names() { return {"coupling", "beam", "hydro", "waves", "aero", "multibody", "turbine", "stability"}; }
+std::vector<std::string> benchmark_case_names() {
+  return {"coupling", "beam", "hydro", "waves", "aero", "multibody", "startup", "turbine", "stability"};
+}
 
 std::filesystem::path source_input(const std::string& relative) {
   const std::filesystem::path local = std::filesystem::path("inputs") / relative;
@@ -121,10 +124,11 @@ void run_benchmark_case(const std::string& name, std::FILE* out) {
   if (name == "waves") return bench_waves(out);
   if (name == "aero") return bench_aero(out);
   if (name == "multibody") return bench_multibody(out);
+  if (name == "startup") return bench_startup(out);
   if (name == "turbine") return bench_turbine(out);
   if (name == "stability") return bench_stability(out);
   if (name != "coupling") {
-    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody, turbine, stability"}, fmt::format("unknown benchmark case '{}'", name));
+    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody, startup, turbine, stability"}, fmt::format("unknown benchmark case '{}'", name));
   }
   const ToyProblem problem = study_problem();
   constexpr double kTmax = 200.0;
