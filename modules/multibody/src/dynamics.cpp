@@ -37,12 +37,15 @@ int body_views(const Model& model, const ChainKinematics& k, BodyView (&views)[4
   return 4;
 }
 
+// The chain's Jacobians touch only its first kBlade columns (kinematics.hpp): products over those.
+constexpr int kChain = kBlade;
+
 // Pᵀ A P with P = [J_v,ref; J_ω,base] (6 × kMaxDofs).
 void add_added_mass(const ChainKinematics& k, const Mat6& added_mass, GeneralisedMatrix& m) {
-  Eigen::Matrix<double, 6, kMaxDofs> p;
-  p.topRows<3>() = k.reference.jacobian;
-  p.bottomRows<3>() = k.base.jacobian;
-  m.noalias() += p.transpose().lazyProduct(added_mass * p);
+  Eigen::Matrix<double, 6, kChain> p;
+  p.topRows<3>() = k.reference.jacobian.leftCols<kChain>();
+  p.bottomRows<3>() = k.base.jacobian.leftCols<kChain>();
+  m.topLeftCorner<kChain, kChain>().noalias() += p.transpose().lazyProduct(added_mass * p);
 }
 
 GeneralisedMatrix assemble_mass(const Model& model, const State& state, const ChainKinematics& k,
@@ -52,9 +55,10 @@ GeneralisedMatrix assemble_mass(const Model& model, const State& state, const Ch
   GeneralisedMatrix m = GeneralisedMatrix::Zero();
   for (int i = 0; i < n; ++i) {
     const BodyView& b = views[i];
-    // Coefficient-based products: at 21 × 3 × 21 Eigen would take its blocked GEMM, slower here.
-    m.noalias() += (b.mass * b.cm->jacobian).transpose().lazyProduct(b.cm->jacobian);
-    m.noalias() += b.rotation->jacobian.transpose().lazyProduct(b.inertia_g * b.rotation->jacobian);
+    const auto v = b.cm->jacobian.leftCols<kChain>();
+    const auto w = b.rotation->jacobian.leftCols<kChain>();
+    m.topLeftCorner<kChain, kChain>().noalias() += (b.mass * v).transpose().lazyProduct(v);
+    m.topLeftCorner<kChain, kChain>().noalias() += w.transpose().lazyProduct(b.inertia_g * w);
   }
   // Flexible tower: its mass with the elastic Jacobian columns.
   if (model.flexible_tower.mode_count > 0) add_flexible_body_mass(model.flexible_tower.inertia, tower_motion(model, state, k), m);

@@ -41,24 +41,44 @@ Mat3 inertia_from_second_moment(const Mat3& p) { return p.trace() * Mat3::Identi
 void add_flexible_body_mass(const ShapeIntegrals& in, const FlexibleBodyMotion& body, GeneralisedMatrix& mass) {
   const Deflected d = deflected(in, body);
   const Mat3& t = body.orientation;
-  const Jacobian& a = body.origin->jacobian;
-  const Jacobian& b = body.rotation->jacobian;
+  // The chain's Jacobians touch only its first kBlade columns (kinematics.hpp): the products run
+  // over those (a 12 × 12 block), and a body whose modes lie beyond them (a blade) adds its coupling
+  // columns separately — a third of the work of the full 21 × 21 products.
+  constexpr int kChain = kBlade;
+  using ChainJacobian = Eigen::Matrix<double, 3, kChain>;
+  const ChainJacobian a = body.origin->jacobian.leftCols<kChain>();
+  const ChainJacobian b = body.rotation->jacobian.leftCols<kChain>();
   // v_k = a u − (T ρ_k)~ b u + Σ_j T φ_kj u_j: the sum of m J_kᵀ J_k, block by block.
   const Mat3 s_skew = skew(t * d.s);
   const Mat3 inertia = t * inertia_from_second_moment(d.p) * t.transpose();
-  Jacobian modal_force = Jacobian::Zero();   // columns ∫m T φ_j
-  Jacobian modal_moment = Jacobian::Zero();  // columns ∫m (T ρ) × T φ_j
+  Eigen::Matrix<double, 3, kMaxBodyModes> modal_force, modal_moment;  // ∫m T φ_j and ∫m (T ρ) × T φ_j
   for (int j = 0; j < body.mode_count; ++j) {
-    const int c = body.first_dof + j;
-    modal_force.col(c) = t * in.shape_mass_kg[j];
-    modal_moment.col(c) = t * cross_of(d.b[j]);
-    for (int i = 0; i < body.mode_count; ++i) mass(body.first_dof + i, c) += in.shape_product_kg[i][j].trace();
+    modal_force.col(j) = t * in.shape_mass_kg[j];
+    modal_moment.col(j) = t * cross_of(d.b[j]);
+    for (int i = 0; i < body.mode_count; ++i) mass(body.first_dof + i, body.first_dof + j) += in.shape_product_kg[i][j].trace();
   }
-  const Jacobian linear = in.mass_kg * a - s_skew * b + modal_force;  // ∫ m v_k per unit u
-  // Coefficient-based products: at 21 × 3 × 21 Eigen would take its blocked GEMM, slower here.
-  const Jacobian rotary = inertia * b + modal_moment;
-  mass.noalias() += a.transpose().lazyProduct(linear - in.mass_kg * a) + linear.transpose().lazyProduct(a);
-  mass.noalias() += b.transpose().lazyProduct(rotary) + modal_moment.transpose().lazyProduct(b);
+  ChainJacobian linear = in.mass_kg * a - s_skew * b;  // ∫ m v_k per unit u, chain columns
+  ChainJacobian rotary = inertia * b;
+  const bool inside = body.first_dof < kChain;  // the tower's modes are chain columns, a blade's are not
+  if (inside) {
+    for (int j = 0; j < body.mode_count; ++j) {
+      linear.col(body.first_dof + j) += modal_force.col(j);
+      rotary.col(body.first_dof + j) += modal_moment.col(j);
+    }
+  }
+  ChainJacobian moment_columns = ChainJacobian::Zero();  // modal_moment placed in the chain columns
+  if (inside)
+    for (int j = 0; j < body.mode_count; ++j) moment_columns.col(body.first_dof + j) = modal_moment.col(j);
+  // Coefficient-based products (small fixed sizes).
+  mass.topLeftCorner<kChain, kChain>().noalias() += a.transpose().lazyProduct(linear - in.mass_kg * a) + linear.transpose().lazyProduct(a);
+  mass.topLeftCorner<kChain, kChain>().noalias() += b.transpose().lazyProduct(rotary) + moment_columns.transpose().lazyProduct(b);
+  if (!inside) {
+    for (int j = 0; j < body.mode_count; ++j) {
+      const Eigen::Matrix<double, kChain, 1> coupling = a.transpose() * modal_force.col(j) + b.transpose() * modal_moment.col(j);
+      mass.block<kChain, 1>(0, body.first_dof + j) += coupling;
+      mass.block<1, kChain>(body.first_dof + j, 0) += coupling.transpose();
+    }
+  }
 }
 
 FlexibleBodyDAlembert flexible_body_dalembert(const ShapeIntegrals& in, const FlexibleBodyMotion& body,

@@ -33,6 +33,9 @@ struct RotationKinematics {
   Jacobian jacobian = Jacobian::Zero();      // J_ω: ω = J_ω u + prescribed yaw rate part [-]
 };
 
+// Every Jacobian here has non-zero columns only among the first kBlade DOFs (platform, rotor,
+// generator, tower modes): the Rayleigh–Ritz blades' modes enter through their own points
+// (blade_body.hpp). The mass assembly relies on it.
 struct ChainKinematics {
   RotationKinematics base;                   // b
   RotationKinematics tower_top_frame;        // tower-top frame (= b with a rigid tower; tilted by the slopes)
