@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include "flow_terms.hpp"
 #include "fowtsim/core/rotation.hpp"
 #include "section_mechanics.hpp"
 
@@ -62,8 +63,9 @@ struct NodeBlocks {
   Vec6 rhs;
 };
 
+// `pressures`: the pipe's face pressures (face_pressures), empty for a beam.
 void node_blocks(const BeamModel& model, const BeamInput& input, const BeamState& state, int i,
-                 Inertia inertia, NodeBlocks& out) {
+                 Inertia inertia, const std::vector<double>& pressures, NodeBlocks& out) {
   out.mass.setZero();
   out.damping.setZero();
   out.stiffness.setZero();
@@ -75,6 +77,22 @@ void node_blocks(const BeamModel& model, const BeamInput& input, const BeamState
                   out.stiffness, out.rhs);
   if (i == model.node_count() - 1)
     add_dead_load(input.tip_load, state.orientation[i] * model.tip_arm_m, out.stiffness, out.rhs);
+  if (model.flow)
+    add_flow_node_terms(model, input, state, i, pressures.back(), inertia == Inertia::included, out.mass,
+                        out.damping, out.stiffness, out.rhs);
+}
+
+// The pipe's face pressures and the resultant offset of section j (nullptr for a beam).
+std::vector<double> pressures_of(const BeamModel& model, const BeamInput& input, const BeamState& state) {
+  std::vector<double> p;
+  if (model.flow) face_pressures(model, input, state, p);
+  return p;
+}
+
+const Vec6* section_offset(const BeamModel& model, const std::vector<double>& pressures, int j, Vec6& storage) {
+  if (!model.flow) return nullptr;
+  storage = flow_section_offset(*model.flow, pressures[j]);
+  return &storage;
 }
 
 // Adds a section's 12×12 tangent to the blocks of its nodes (a < 0: the clamped root).
@@ -100,9 +118,10 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
                Inertia inertia, LinearizedBeam& out) {
   const int n = model.node_count();
   out.resize(n);
+  const std::vector<double> pressures = pressures_of(model, input, state);
   NodeBlocks nb;
   for (int i = 0; i < n; ++i) {
-    node_blocks(model, input, state, i, inertia, nb);
+    node_blocks(model, input, state, i, inertia, pressures, nb);
     out.mass[i] = nb.mass;
     out.damping.diag(i) = nb.damping;
     out.stiffness.diag(i) = nb.stiffness;
@@ -111,36 +130,55 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
   if (inertia == Inertia::static_only) out.damping.set_zero();
 
   SectionLinearization lin;
-  Mat12 tangent;
+  Mat12 tangent, flow_damping;
+  Vec6 offset;
   for (const SectionModel& sec : model.sections) {
     const int a = sec.inboard, b = sec.outboard;
-    linearize_section(sec, node_pose(model, state, a), node_pose(model, state, b), lin);
+    const NodePose pa = node_pose(model, state, a), pb = node_pose(model, state, b);
+    linearize_section(sec, pa, pb, lin, section_offset(model, pressures, b, offset));
     out.rhs.segment<6>(6 * b) += lin.node_loads.tail<6>();
     if (a >= 0) out.rhs.segment<6>(6 * a) += lin.node_loads.head<6>();
     section_tangent(lin, sec.stiffness, 1.0, tangent);
     scatter(tangent, a, b, out.stiffness);
     if (inertia == Inertia::static_only) continue;
     section_tangent(lin, sec.damping, 0.0, tangent);
+    if (model.flow) {
+      flow_section_damping(*model.flow, sec, pa, pb, flow_damping);
+      tangent += flow_damping;
+    }
     scatter(tangent, a, b, out.damping);
   }
 }
 
 void assemble_step_matrix(const BeamModel& model, const BeamInput& input, const BeamState& state,
                           const StepWeights& w, BlockTridiagonal& lhs) {
+  const std::vector<double> pressures = pressures_of(model, input, state);
   NodeBlocks nb;
   for (int i = 0; i < model.node_count(); ++i) {
-    node_blocks(model, input, state, i, Inertia::included, nb);
+    node_blocks(model, input, state, i, Inertia::included, pressures, nb);
     lhs.diag(i) = w.mass * nb.mass + w.damping * nb.damping + w.stiffness * nb.stiffness;
   }
   // Per section: k K + c C = −G (k C + c D) B − k·geometric.
   SectionLinearization lin;
-  Mat12 tangent;
+  Mat12 tangent, flow_damping;
+  Vec6 offset;
   for (const SectionModel& sec : model.sections) {
     const int a = sec.inboard, b = sec.outboard;
-    linearize_section(sec, node_pose(model, state, a), node_pose(model, state, b), lin);
+    const NodePose pa = node_pose(model, state, a), pb = node_pose(model, state, b);
+    linearize_section(sec, pa, pb, lin, section_offset(model, pressures, b, offset));
     section_tangent(lin, w.stiffness * sec.stiffness + w.damping * sec.damping, w.stiffness, tangent);
+    if (model.flow) {
+      flow_section_damping(*model.flow, sec, pa, pb, flow_damping);
+      tangent += w.damping * flow_damping;
+    }
     scatter(tangent, a, b, lhs);
   }
+}
+
+bool root_flow_offset(const BeamModel& model, const BeamInput& input, const BeamState& state, Vec6& out) {
+  if (!model.flow) return false;
+  out = flow_section_offset(*model.flow, pressures_of(model, input, state).front());
+  return true;
 }
 
 Vec6 root_reaction(const BeamModel& model, const BeamState& state) {

@@ -57,8 +57,11 @@ struct SectionLinearization {
   Mat12x9 geometric;      // ∂(node loads)/∂q at fixed S, reduced columns
 };
 
+// `offset` (optional, section frame) is added to the elastic resultant: a resultant that does not
+// come from the strains, such as the pressure and momentum flux of fluid flowing inside a pipe
+// (internal_flow.hpp). It rotates with the section, so it enters the loads and the geometric part.
 void linearize_section(const SectionModel& sec, const NodePose& a, const NodePose& b,
-                       SectionLinearization& out);
+                       SectionLinearization& out, const Vec6* offset = nullptr);
 
 // [f_a; m_a; f_b; m_b] of a section-frame resultant s: G s.
 Vec12 node_loads_of(const SectionLinearization& lin, const Vec6& s);
@@ -77,10 +80,11 @@ void section_tangent(const SectionLinearization& lin, const Mat6& weight, double
 // geometric part applied as the vector formulas they stand for (header, "Increments"). w_k and
 // w_c are the reduced node vectors [u_a − u_b; θ_a; θ_b]. Exact to rounding against the matrices.
 Vec12 section_residual_loads(const SectionModel& sec, const NodePose& a, const NodePose& b,
-                             const Vec9& w_k, const Vec9& w_c);
+                             const Vec9& w_k, const Vec9& w_c, const Vec6* offset = nullptr);
 
 // Loads only, with optional strain-rate damping D B q̇: for outputs and tests.
 Vec12 section_loads(const SectionModel& sec, const NodePose& a, const NodePose& b,
-                    const Vec6* velocity_a = nullptr, const Vec6* velocity_b = nullptr);
+                    const Vec6* velocity_a = nullptr, const Vec6* velocity_b = nullptr,
+                    const Vec6* offset = nullptr);
 
 }  // namespace fowtsim::beam

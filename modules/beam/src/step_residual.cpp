@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "flow_terms.hpp"
 #include "section_mechanics.hpp"
 
 namespace fowtsim::beam {
@@ -78,10 +79,41 @@ void step_residual(const BeamModel& model, const BeamInput& input, const BeamSta
   for (int n = 0; n < model.node_count(); ++n)
     residual.segment<6>(6 * n) = node_residual(model, input, state, n, a.segment<6>(6 * n),
                                                w_c.segment<6>(6 * n), w_k.segment<6>(6 * n));
+  if (!model.flow) {
+    for (const SectionModel& sec : model.sections) {
+      const int ia = sec.inboard, ib = sec.outboard;
+      const Vec12 loads = section_residual_loads(sec, node_pose(model, state, ia), node_pose(model, state, ib),
+                                                 reduced_pair(w_k, ia, ib), reduced_pair(w_c, ia, ib));
+      residual.segment<6>(6 * ib) += loads.tail<6>();
+      if (ia >= 0) residual.segment<6>(6 * ia) += loads.head<6>();
+    }
+    return;
+  }
+  // A pipe: the flow's blocks (flow_terms.hpp) applied to the trial vectors, R += r − M a − C w_c − K w_k,
+  // and the pressure and momentum flux as a resultant offset of every section.
+  std::vector<double> pressures;
+  face_pressures(model, input, state, pressures);
+  Mat6 mass, damping, stiffness;
+  Vec6 rhs;
+  for (int n = 0; n < model.node_count(); ++n) {
+    mass.setZero();
+    damping.setZero();
+    stiffness.setZero();
+    rhs.setZero();
+    add_flow_node_terms(model, input, state, n, pressures.back(), true, mass, damping, stiffness, rhs);
+    residual.segment<6>(6 * n) += rhs - mass * a.segment<6>(6 * n) - damping * w_c.segment<6>(6 * n) -
+                                  stiffness * w_k.segment<6>(6 * n);
+  }
+  Mat12 flow_damping;
   for (const SectionModel& sec : model.sections) {
     const int ia = sec.inboard, ib = sec.outboard;
-    const Vec12 loads = section_residual_loads(sec, node_pose(model, state, ia), node_pose(model, state, ib),
-                                               reduced_pair(w_k, ia, ib), reduced_pair(w_c, ia, ib));
+    const NodePose pa = node_pose(model, state, ia), pb = node_pose(model, state, ib);
+    const Vec6 offset = flow_section_offset(*model.flow, pressures[ib]);
+    Vec12 loads = section_residual_loads(sec, pa, pb, reduced_pair(w_k, ia, ib), reduced_pair(w_c, ia, ib), &offset);
+    flow_section_damping(*model.flow, sec, pa, pb, flow_damping);
+    Vec12 rates;
+    rates << (ia >= 0 ? Vec6(w_c.segment<6>(6 * ia)) : Vec6::Zero()), w_c.segment<6>(6 * ib);
+    loads -= flow_damping * rates;
     residual.segment<6>(6 * ib) += loads.tail<6>();
     if (ia >= 0) residual.segment<6>(6 * ia) += loads.head<6>();
   }
@@ -109,10 +141,12 @@ void frame_acceleration_load(const BeamModel& model, const BeamState& state, con
   }
 }
 
-Vec6 root_residual_load(const BeamModel& model, const BeamState& state, const VecX& w_c, const VecX& w_k) {
+Vec6 root_residual_load(const BeamModel& model, const BeamState& state, const VecX& w_c, const VecX& w_k,
+                        const Vec6* root_offset) {
   const SectionModel& sec = model.sections.front();
   return section_residual_loads(sec, node_pose(model, state, -1), node_pose(model, state, sec.outboard),
-                                reduced_pair(w_k, -1, sec.outboard), reduced_pair(w_c, -1, sec.outboard))
+                                reduced_pair(w_k, -1, sec.outboard), reduced_pair(w_c, -1, sec.outboard),
+                                root_offset)
       .head<6>();
 }
 

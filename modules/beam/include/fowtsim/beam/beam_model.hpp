@@ -10,8 +10,10 @@
 // segment (§2.5: mirrored displacements make the root section's displacement zero). The free
 // tip has no section (the seed's zero-stiffness last cross-section): the half segment beyond
 // node N−1 moves rigidly with it.
+#include <optional>
 #include <vector>
 
+#include "fowtsim/beam/internal_flow.hpp"
 #include "fowtsim/beam/reference_line.hpp"
 #include "fowtsim/core/types.hpp"
 
@@ -70,6 +72,7 @@ struct BeamModel {
   Mat3 tip_orientation = Mat3::Identity();
   double mass_damping_1_s = 0.0;        // μ_M
   double length_m = 0.0;
+  std::optional<InternalFlow> flow;     // fluid flowing inside: a pipe (pipe.hpp); none for a beam
 
   int node_count() const { return static_cast<int>(nodes.size()); }
   int dof_count() const { return 6 * node_count(); }
