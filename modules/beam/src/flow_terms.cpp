@@ -72,7 +72,7 @@ void add_flow_node_terms(const BeamModel& model, const BeamInput& input, const B
     damping.block<3, 3>(0, 0) -= c * m * (wt * t) * t.transpose();  // nor feels the axial Coriolis
     damping.block<3, 3>(0, 3) -= m * v * tt;                        // d/dt (m^f V t) = m^f V θ̇ × t
   }
-  if (i != model.node_count() - 1) return;
+  if (i != model.node_count() - 1 || !model.free_tip()) return;
 
   // The jet leaving the free tip: a follower force −(p A^f + m^f V²) t at the tip point, and the
   // pipe velocity it carries away (applied at the node, as at the faces).
@@ -93,13 +93,24 @@ void add_flow_node_terms(const BeamModel& model, const BeamInput& input, const B
 void flow_section_damping(const InternalFlow& flow, const SectionModel& sec, const NodePose& a,
                           const NodePose& b, Mat12& out) {
   out.setZero();
-  if (sec.inboard < 0) return;
   const Vec3 chord = b.position_m - a.position_m;
   const Mat3 wf = velocity_flux(flow, chord.normalized());
-  out.block<3, 3>(0, 0) = (1.0 - sec.alpha) * wf;
-  out.block<3, 3>(0, 6) = sec.alpha * wf;
-  out.block<3, 3>(6, 0) = -(1.0 - sec.alpha) * wf;
-  out.block<3, 3>(6, 6) = -sec.alpha * wf;
+  // A held end is a point at rest in f: the face between it and its node takes the mean of the
+  // two, half the node's velocity, as a face between two nodes does (for a pin too, not its
+  // ghost's mirrored motion). The convected flux is then skew between neighbours and conserves the
+  // energy of a pipe whose ends do not move, as the continuum does (∫ u̇ ṁ u̇' ds = 0); taking
+  // the end face at rest instead leaves an energy source ṁ V u̇²/2 at the outlet volume, and held
+  // pipes then fluttered well below their divergence speed (u = 2.55 for pinned ends, not π).
+  if (sec.inboard >= 0) {
+    out.block<3, 3>(0, 0) = (1.0 - sec.alpha) * wf;
+    out.block<3, 3>(6, 0) = -(1.0 - sec.alpha) * wf;
+  }
+  if (sec.outboard >= 0) {
+    out.block<3, 3>(0, 6) = sec.alpha * wf;
+    out.block<3, 3>(6, 6) = -sec.alpha * wf;
+  }
+  if (sec.inboard < 0) out.middleRows<6>(0).setZero();
+  if (sec.outboard < 0) out.middleRows<6>(6).setZero();
 }
 
 }  // namespace fowtsim::beam

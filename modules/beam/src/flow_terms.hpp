@@ -31,7 +31,7 @@ void add_flow_node_terms(const BeamModel& model, const BeamInput& input, const B
 
 // Damping tangent (rows and columns [node a; node b]) of the pipe velocity carried by the flow
 // through the face of `sec`: Φ = m^f V (I − 2 t tᵀ) ((1−α) u̇_a + α u̇_b), −Φ on a and +Φ on b,
-// with t the chord direction. Zero for the root face (the inflow comes from a point fixed in f).
+// with t the chord direction; a held end (clamped or pinned) counts as a point at rest in f.
 void flow_section_damping(const InternalFlow& flow, const SectionModel& sec, const NodePose& a,
                           const NodePose& b, Mat12& out);
 

@@ -95,11 +95,11 @@ const Vec6* section_offset(const BeamModel& model, const std::vector<double>& pr
   return &storage;
 }
 
-// Adds a section's 12×12 tangent to the blocks of its nodes (a < 0: the clamped root).
+// Adds a section's 12×12 tangent to the blocks of its nodes (a or b < 0: a held end).
 void scatter(const Mat12& t, int a, int b, BlockTridiagonal& m) {
-  m.diag(b) += t.block<6, 6>(6, 6);
-  if (a < 0) return;
-  m.diag(a) += t.block<6, 6>(0, 0);
+  if (b >= 0) m.diag(b) += t.block<6, 6>(6, 6);
+  if (a >= 0) m.diag(a) += t.block<6, 6>(0, 0);
+  if (a < 0 || b < 0) return;
   m.upper(a) = t.block<6, 6>(0, 6);  // each off-diagonal block belongs to one section
   m.lower(a) = t.block<6, 6>(6, 0);
 }
@@ -132,13 +132,16 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
   SectionLinearization lin;
   Mat12 tangent, flow_damping;
   Vec6 offset;
-  for (const SectionModel& sec : model.sections) {
+  NodePose pa, pb;
+  for (int j = 0; j < static_cast<int>(model.sections.size()); ++j) {
+    const SectionModel& sec = model.sections[j];
     const int a = sec.inboard, b = sec.outboard;
-    const NodePose pa = node_pose(model, state, a), pb = node_pose(model, state, b);
-    linearize_section(sec, pa, pb, lin, section_offset(model, pressures, b, offset));
-    out.rhs.segment<6>(6 * b) += lin.node_loads.tail<6>();
+    section_poses(model, state, sec, pa, pb);
+    linearize_section(sec, pa, pb, lin, section_offset(model, pressures, j, offset));
+    if (b >= 0) out.rhs.segment<6>(6 * b) += lin.node_loads.tail<6>();
     if (a >= 0) out.rhs.segment<6>(6 * a) += lin.node_loads.head<6>();
     section_tangent(lin, sec.stiffness, 1.0, tangent);
+    fold_pinned_end(sec, tangent);
     scatter(tangent, a, b, out.stiffness);
     if (inertia == Inertia::static_only) continue;
     section_tangent(lin, sec.damping, 0.0, tangent);
@@ -146,6 +149,7 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
       flow_section_damping(*model.flow, sec, pa, pb, flow_damping);
       tangent += flow_damping;
     }
+    fold_pinned_end(sec, tangent);
     scatter(tangent, a, b, out.damping);
   }
 }
@@ -162,16 +166,18 @@ void assemble_step_matrix(const BeamModel& model, const BeamInput& input, const 
   SectionLinearization lin;
   Mat12 tangent, flow_damping;
   Vec6 offset;
-  for (const SectionModel& sec : model.sections) {
-    const int a = sec.inboard, b = sec.outboard;
-    const NodePose pa = node_pose(model, state, a), pb = node_pose(model, state, b);
-    linearize_section(sec, pa, pb, lin, section_offset(model, pressures, b, offset));
+  NodePose pa, pb;
+  for (int j = 0; j < static_cast<int>(model.sections.size()); ++j) {
+    const SectionModel& sec = model.sections[j];
+    section_poses(model, state, sec, pa, pb);
+    linearize_section(sec, pa, pb, lin, section_offset(model, pressures, j, offset));
     section_tangent(lin, w.stiffness * sec.stiffness + w.damping * sec.damping, w.stiffness, tangent);
     if (model.flow) {
       flow_section_damping(*model.flow, sec, pa, pb, flow_damping);
       tangent += w.damping * flow_damping;
     }
-    scatter(tangent, a, b, lhs);
+    fold_pinned_end(sec, tangent);
+    scatter(tangent, sec.inboard, sec.outboard, lhs);
   }
 }
 
@@ -184,9 +190,13 @@ bool root_flow_offset(const BeamModel& model, const BeamInput& input, const Beam
 Vec6 root_reaction(const BeamModel& model, const BeamState& state) {
   const SectionModel& sec = model.sections.front();
   const Vec6 at_rest = Vec6::Zero();
-  return section_loads(sec, node_pose(model, state, -1), node_pose(model, state, 0), &at_rest,
-                       &state.velocity[0])
-      .head<6>();
+  NodePose a, b;
+  section_poses(model, state, sec, a, b);
+  const Vec6 root_motion = end_motion(sec, kRootEnd, state.velocity[0], at_rest);
+  Vec6 load = section_loads(sec, a, b, &root_motion, &state.velocity[0]).head<6>();
+  // About the root point: for a pin the loads on the ghost act at the section, on the end point.
+  if (sec.pinned) load.tail<3>() -= (sec.alpha * (b.position_m - a.position_m)).cross(Vec3(load.head<3>()));
+  return load;
 }
 
 }  // namespace fowtsim::beam

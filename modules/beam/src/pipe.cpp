@@ -64,6 +64,8 @@ BeamDefinition pipe_beam_definition(const PipeDefinition& d) {
   BeamDefinition beam{d.line, {benchmarks::uniform_station(0.0, k, mass, rotary),
                                benchmarks::uniform_station(1.0, k, mass, rotary)}};
   beam.stiffness_damping = Vec6::Constant(d.stiffness_damping_s);
+  beam.root_end = d.root_end;
+  beam.tip_end = d.tip_end;
   return beam;
 }
 

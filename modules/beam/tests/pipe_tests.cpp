@@ -214,7 +214,7 @@ TEST_CASE("cantilever pipe flutter threshold for beta = 0.2", "[verification][be
   // Chebyshev collocation of the same equation: 5.5914. Slender pipe (μ_A = 1e5) of 40 volumes,
   // bisection to 1e-3. Measured 5.5944, 3.0e-3 above the collocation value (discretisation, shear
   // at μ_A = 1e5 and the bisection); bound 3e-2.
-  const double u = pb::flutter_threshold(1e5, pb::kFlutterBeta, 40, 5.0, 6.5, 1e-3);
+  const double u = pb::instability_threshold(1e5, pb::kFlutterBeta, EndCondition::free, 40, 5.0, 6.5, 1e-3);
   INFO("u_cf " << u);
   CHECK(std::abs(u - pb::kFlutterEulerBernoulli) < 3e-2);
   CHECK(std::abs(u - pb::kFlutterPublished) < 0.05);  // the published value's last digit
@@ -224,7 +224,7 @@ TEST_CASE("the block-tridiagonal solve without pivoting across blocks is safe fo
           "[unit][beam][pipe]") {
   // The flow terms make the step matrix non-symmetric (gyroscopic and follower terms). Against a
   // dense LU with partial pivoting, beyond the flutter threshold (μ_V = 8) and for time steps from
-  // 1e-6 to 1e-1 of the first period: measured relative difference 4.5e-13; bound 5e-12. The block
+  // 1e-6 to 1e-1 of the first period: measured relative difference 3.2e-13; bound 3e-12. The block
   // LU needs no pivoting across blocks here (no LAPACK banded fallback): the mass keeps every
   // pivot block dominant at these steps.
   const PipeDefinition def = pb::cantilever(1.8e4, 0.5035, 8.0);
@@ -245,5 +245,37 @@ TEST_CASE("the block-tridiagonal solve without pivoting across blocks is safe fo
     worst = std::max(worst, (x - exact).norm() / exact.norm());
   }
   INFO("worst relative difference " << worst);
-  CHECK(worst < 5e-12);
+  CHECK(worst < 3e-12);
+}
+
+TEST_CASE("pipes held at both ends diverge at u = pi (pinned) and 2 pi (clamped)", "[verification][beam][pipe]") {
+  // Païdoussis vol. 1 §3.3.6 (eqs. 3.90, Figs. 3.9–3.10): u_cd = π and 2π for any β; here β = 0.5,
+  // μ_A = 1e5, 40 volumes, bisection to 1e-4. Measured 3.14284 (4.0e-4 relative) and 6.29262
+  // (1.5e-3, the held ends' half and mirrored volumes); bounds 4e-3 and 2e-2.
+  const double pinned = pb::instability_threshold(1e5, 0.5, EndCondition::pinned, 40, 2.5, 4.0, 1e-4);
+  const double clamped = pb::instability_threshold(1e5, 0.5, EndCondition::clamped, 40, 5.5, 7.0, 1e-4);
+  INFO("pinned-pinned " << pinned << ", clamped-clamped " << clamped);
+  CHECK(std::abs(pinned / M_PI - 1.0) < 4e-3);
+  CHECK(std::abs(clamped / (2.0 * M_PI) - 1.0) < 2e-2);
+}
+
+TEST_CASE("pipes held at both ends vibrate at the Euler-Bernoulli frequencies without flow", "[verification][beam][pipe]") {
+  // Pinned-pinned μ_ω = (kπ)², clamped-clamped (β_k L)² with β_1 L = 4.73004, β_2 L = 7.85320; μ_A = 1e5
+  // (shear and rotary inertia ~1e-4), 40 volumes. Measured 1.6e-4, 6.5e-4 (pinned, modes 1–2) and
+  // 2.4e-4, 6e-5 (clamped); bounds 2e-3, 7e-3 and 3e-3, 6e-4.
+  for (const EndCondition ends : {EndCondition::pinned, EndCondition::clamped}) {
+    const PipeDefinition def = pb::supported(1e5, 0.5, 0.0, ends);
+    const BeamModel model = discretise_pipe(def, 40);
+    const std::vector<double> f = pb::bending_frequencies(model, def, BeamInput{}, make_state(model), -1, 2);
+    REQUIRE(f.size() == 2);
+    const std::array<double, 2> exact = ends == EndCondition::pinned
+                                             ? std::array<double, 2>{M_PI * M_PI, 4.0 * M_PI * M_PI}
+                                             : std::array<double, 2>{4.73004 * 4.73004, 7.85320 * 7.85320};
+    const std::array<double, 2> bound = ends == EndCondition::pinned ? std::array<double, 2>{2e-3, 7e-3}
+                                                                     : std::array<double, 2>{3e-3, 6e-4};
+    for (int k = 0; k < 2; ++k) {
+      INFO("ends " << static_cast<int>(ends) << " mode " << k + 1 << ": " << f[k] << " vs " << exact[k]);
+      CHECK(std::abs(f[k] / exact[k] - 1.0) < bound[k]);
+    }
+  }
 }

@@ -19,6 +19,8 @@ struct PipeDefinition {
   double fluid_viscosity_pa_s = 0.0;    // μ^f, 0 for an inviscid fluid (no friction) [Pa·s]
   double wall_roughness_m = 0.0;        // ε: absolute roughness for the Haaland friction factor [m]
   double stiffness_damping_s = 0.0;     // μ_K: damping D = μ_K K (seed §3.4.3) [s]
+  EndCondition root_end = EndCondition::clamped;  // clamped or pinned (the flow enters here when V > 0)
+  EndCondition tip_end = EndCondition::free;      // free (the fluid leaves as a jet), clamped or pinned
   double boundary_pressure_pa = 0.0;    // internal gauge pressure at the end named below [Pa]
   bool pressure_at_tip = true;          // true: at the tip (the outlet when V > 0); false: at the root
   bool seed_momentum_flux = false;      // the seed's eq. 3.17 flux (internal_flow.hpp), for comparison

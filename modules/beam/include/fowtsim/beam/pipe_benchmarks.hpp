@@ -17,6 +17,8 @@ namespace fowtsim::beam::pipe_benchmarks {
 // The seed does not give the diameter ratio, ν or densities of Table 3.1: the frequencies depend
 // on them only through shear and rotary inertia, O(1/μ_A).
 PipeDefinition cantilever(double mu_a, double mu_m, double mu_v);
+// The same pipe held at both ends (pinned-pinned or clamped-clamped).
+PipeDefinition supported(double mu_a, double mu_m, double mu_v, EndCondition ends);
 
 // ω → μ_ω = ω L² √((m^f + m^p)/EI) and μ_Ω → Ω = μ_Ω / (L² √(m^p/EI)) for that pipe (eq. 3.64).
 double dimensionless_frequency(const PipeDefinition& def, double omega_rad_s);
@@ -72,11 +74,17 @@ inline constexpr double kFlutterBeta = 0.2;
 inline constexpr double kFlutterPublished = 5.6;
 inline constexpr double kFlutterEulerBernoulli = 5.5914;
 
+// Divergence of pipes held at both ends (Païdoussis vol. 1 §3.3.6, eqs. 3.90: sin u = 0 pinned,
+// clamped likewise): u_cd = π pinned-pinned, 2π clamped-clamped, for any β.
+
 // The largest real part of the eigenvalues of the lowest `modes` bending modes, Re λ · L² √((m^f+m^p)/EI),
-// of the straight cantilever at rest: > 0 once it flutters.
+// of the straight pipe at rest: > 0 once it flutters or diverges.
 double largest_growth_rate(const PipeDefinition& def, int segments, int modes);
 
-// u_cf of the cantilever (μ_A, β) by bisection on μ_V in [lo, hi] to `tolerance`.
-double flutter_threshold(double mu_a, double beta, int segments, double lo, double hi, double tolerance);
+// The lowest flow μ_V in [lo, hi] at which supported(μ_A, β, μ_V, ends) (or cantilever() for
+// ends = free) loses stability, by bisection to `tolerance`; growth above 1e-3 counts as unstable
+// (the eigen-solver's noise on repeated pairs is ~1e-4).
+double instability_threshold(double mu_a, double beta, EndCondition ends, int segments, double lo, double hi,
+                             double tolerance);
 
 }  // namespace fowtsim::beam::pipe_benchmarks
