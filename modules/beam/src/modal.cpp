@@ -57,6 +57,7 @@ std::vector<DampedMode> damped_modes(const BeamModel& model, const BeamInput& in
       const double total = mode.share.segment<3>(3 * group).sum();
       if (total > 0.0) mode.share.segment<3>(3 * group) /= total;
     }
+    mode.shape = x;
     modes.push_back(mode);
   }
   std::sort(modes.begin(), modes.end(),

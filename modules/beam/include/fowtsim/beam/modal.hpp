@@ -22,6 +22,7 @@ struct DampedMode {
   std::complex<double> eigenvalue;  // λ = σ + iω_d: σ < 0 decays, σ > 0 grows [1/s]
   Vec6 share = Vec6::Zero();        // Σ_n |x_k|² over nodes for k = u_x, u_y, u_z (sharing 1) and
                                     // θ_x, θ_y, θ_z (sharing 1), components in f [-]: which way it moves
+  Eigen::VectorXcd shape;           // x: [u*; θ*] of every node in f (6N), unit norm, any phase [m, rad]
 };
 
 // The modes with Im λ > 0 (one of each complex pair) and the non-oscillating ones (Im λ = 0),
