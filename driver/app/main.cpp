@@ -191,7 +191,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> cases;
   auto* verify = app.add_subcommand("verify", "run verification cases against analytic or published answers");
   verify->add_option("cases", cases,
-                     "cases (default all): coupling, beam-rollup, beam-curved, beam-timestep, beam-beamdyn, beam-frequencies, sea, "
+                     "cases (default all): coupling, beam-rollup, beam-curved, beam-timestep, beam-beamdyn, beam-frequencies, pipe, sea, "
                      "aero, wind, multibody, control, flexbody, slender, free-decay, turbine-validation, turbine-oc3");
   std::string shared_dir = default_shared_dir().string();
   verify->add_option("--shared", shared_dir,

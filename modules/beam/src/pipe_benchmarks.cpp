@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fowtsim/beam/modal.hpp"
+#include "fowtsim/beam/solvers.hpp"
 
 namespace fowtsim::beam::pipe_benchmarks {
 namespace {
@@ -74,6 +75,27 @@ std::vector<double> bending_frequencies(const BeamModel& model, const PipeDefini
     if (static_cast<int>(out.size()) == count) break;
   }
   return out;
+}
+
+std::vector<double> table31_flow_frequencies(double mu_v, bool seed_flux, int segments) {
+  PipeDefinition def = cantilever(1.8e4, 0.5035, mu_v);
+  def.seed_momentum_flux = seed_flux;
+  const BeamModel model = discretise_pipe(def, segments);
+  return bending_frequencies(model, def, BeamInput{}, make_state(model), -1, 3);
+}
+
+RotatingFrequencies table31_rotating_frequencies(double mu_omega, int count, int segments) {
+  const PipeDefinition def = cantilever(3.9e3, 0.0, 0.0);
+  const BeamModel model = discretise_pipe(def, segments);
+  BeamInput in;
+  in.frame.angular_velocity_rad_s = Vec3(0.0, rotation_speed_rad_s(def, mu_omega), 0.0);
+  BeamState state = make_state(model);
+  if (mu_omega == 0.0) {
+    const std::vector<double> f = bending_frequencies(model, def, in, state, -1, count);
+    return {f, f};
+  }
+  solve_static(model, in, state);
+  return {bending_frequencies(model, def, in, state, 1, count), bending_frequencies(model, def, in, state, 0, count)};
 }
 
 double largest_growth_rate(const PipeDefinition& def, int segments, int modes) {

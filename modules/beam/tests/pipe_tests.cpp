@@ -135,10 +135,7 @@ TEST_CASE("seed Table 3.1, cantilever with flow: frequencies against the plug-fl
   const std::array<double, 3> bound{4e-3, 7e-3, 1e-2};
   for (const pb::FlowRow& row : pb::kTable31Flow) {
     for (const bool seed_flux : {false, true}) {
-      PipeDefinition def = pb::cantilever(1.8e4, 0.5035, row.mu_v);
-      def.seed_momentum_flux = seed_flux;
-      const BeamModel model = discretise_pipe(def, 40);
-      const std::vector<double> f = pb::bending_frequencies(model, def, BeamInput{}, make_state(model), -1, 3);
+      const std::vector<double> f = pb::table31_flow_frequencies(row.mu_v, seed_flux);
       REQUIRE(f.size() == 3);
       for (int k = 0; k < (seed_flux ? 1 : 3); ++k) {
         const double ref = seed_flux ? row.euler_bernoulli_half_coriolis[k] : row.timoshenko[k];
@@ -154,12 +151,7 @@ TEST_CASE("seed Table 3.1: the first frequency falls with flow, and rises only w
   // Linear theory (Païdoussis §3.5.2, Gregory & Païdoussis 1966): flow damps the first mode and
   // lowers its frequency. The seed's combined model rises from 3.51 to 3.82 at μ_V = 1.35; its
   // flux keeps half the Coriolis force, and our model with that flux rises too.
-  auto first = [](double mu_v, bool seed_flux) {
-    PipeDefinition def = pb::cantilever(1.8e4, 0.5035, mu_v);
-    def.seed_momentum_flux = seed_flux;
-    const BeamModel model = discretise_pipe(def, 40);
-    return pb::bending_frequencies(model, def, BeamInput{}, make_state(model), -1, 1).at(0);
-  };
+  auto first = [](double mu_v, bool seed_flux) { return pb::table31_flow_frequencies(mu_v, seed_flux).at(0); };
   CHECK(first(1.35, false) < first(0.81, false));
   CHECK(first(0.81, false) < first(0.0, false));
   CHECK(first(1.35, true) > first(0.0, true));
@@ -180,9 +172,7 @@ TEST_CASE("seed Table 3.1, rotating cantilever without flow: frequencies against
   // mode (μ_ω ≈ 60 at μ_A = 3.9e3) and the rotation couples them gyroscopically (README).
   const std::array<double, 2> flap_bound{1e-2, 8e-3}, lag_bound{3e-2, 1e-2};
   const std::array<double, 3> rest_bound{2e-3, 5e-3, 7e-3};
-  const PipeDefinition def = pb::cantilever(3.9e3, 0.0, 0.0);
-  const BeamModel model = discretise_pipe(def, 40);
-  const std::vector<double> at_rest = pb::bending_frequencies(model, def, BeamInput{}, make_state(model), -1, 3);
+  const std::vector<double> at_rest = pb::table31_rotating_frequencies(0.0, 3).flap;
   REQUIRE(at_rest.size() == 3);
   for (int k = 0; k < 3; ++k) {
     INFO("mode " << k + 1 << ": " << at_rest[k] << " vs " << pb::kTable31RotationTimoshenko[k]);
@@ -190,12 +180,8 @@ TEST_CASE("seed Table 3.1, rotating cantilever without flow: frequencies against
   }
   for (const pb::RotationRow& row : pb::kTable31Rotation) {
     if (row.mu_omega == 0.0) continue;
-    BeamInput in;
-    in.frame.angular_velocity_rad_s = Vec3(0.0, pb::rotation_speed_rad_s(def, row.mu_omega), 0.0);
-    BeamState state = make_state(model);
-    solve_static(model, in, state);
-    const std::vector<double> flap = pb::bending_frequencies(model, def, in, state, 1, 2);
-    const std::vector<double> lag = pb::bending_frequencies(model, def, in, state, 0, 2);
+    const pb::RotatingFrequencies f = pb::table31_rotating_frequencies(row.mu_omega, 2);
+    const std::vector<double>&flap = f.flap, &lag = f.lead_lag;
     REQUIRE(flap.size() == 2);
     REQUIRE(lag.size() == 2);
     for (int k = 0; k < 2; ++k) {

@@ -30,6 +30,18 @@ double rotation_speed_rad_s(const PipeDefinition& def, double mu_omega);
 std::vector<double> bending_frequencies(const BeamModel& model, const PipeDefinition& def,
                                         const BeamInput& input, const BeamState& state, int axis, int count);
 
+// The first three bending μ_ω of seed Table 3.1's cantilever with flow (μ_A = 1.8e4, μ_m = 0.5035)
+// at μ_V, at rest, with our momentum flux or the seed's.
+std::vector<double> table31_flow_frequencies(double mu_v, bool seed_flux, int segments = 40);
+
+// The first `count` bending μ_ω of seed Table 3.1's rotating cantilever (μ_A = 3.9e3, μ_m = 0) at
+// μ_Ω about y, out of the plane of rotation (along y) and in it (along x), about the static
+// equilibrium under the centrifugal load. At μ_Ω = 0 both are the repeated pair counted once.
+struct RotatingFrequencies {
+  std::vector<double> flap, lead_lag;
+};
+RotatingFrequencies table31_rotating_frequencies(double mu_omega, int count, int segments = 40);
+
 // Seed Table 3.1, right half (μ_A = 1.8e4, μ_m = 0.5035, μ_Ω = 0): μ_V and, per row, the seed's
 // combined model, Zhai et al. [147] (linear Timoshenko), and the classical Euler–Bernoulli plug-flow
 // equation by Chebyshev collocation (scripts/pipe_linear_theory.py: 2√β u and, for the seed's flux,

@@ -1,0 +1,93 @@
+// `fowtsim verify pipe`: the pipe conveying fluid (seed 000 Ch. 3, modules/beam/PIPE.md) — seed
+// Table 3.1 with its reference columns, and the classical stability thresholds of Païdoussis. The
+// bounds are those of modules/beam/tests/pipe_tests.cpp, where each is measured and explained.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "fowtsim/beam/pipe_benchmarks.hpp"
+#include "verify/verify_cases.hpp"
+
+namespace fowtsim::driver {
+namespace {
+
+namespace pb = beam::pipe_benchmarks;
+
+VerificationRow pipe_row(std::string metric, double value, double limit, std::string source) {
+  return {"pipe", std::move(metric), value, fmt::format("< {:.3g}", limit), std::move(source), value < limit};
+}
+
+std::string three(const std::array<double, 3>& f) { return fmt::format("{:7.3f} {:7.3f} {:7.3f}", f[0], f[1], f[2]); }
+std::string three(const std::vector<double>& f) {
+  std::array<double, 3> a{0.0, 0.0, 0.0};
+  std::copy_n(f.begin(), std::min<std::size_t>(3, f.size()), a.begin());
+  return three(a);
+}
+
+}  // namespace
+
+std::vector<VerificationRow> verify_pipe(std::FILE* out) {
+  std::vector<VerificationRow> rows;
+  fmt::print(out, "Seed Table 3.1, cantilever with flow (μ_A = 1.8e4, μ_m = 0.5035, 40 volumes): μ_ω = Im λ L² √(m/EI)\n");
+  fmt::print(out, "{:>5} | {:^23} | {:^23} | {:^23} | {:^23} | {:>9} {:>9}\n", "μ_V", "ours", "Timoshenko plug flow",
+             "seed", "Zhai et al.", "seed flux", "E–B ½Cor.");
+  std::array<double, 3> worst{0.0, 0.0, 0.0};
+  double worst_seed_flux = 0.0, first_at_rest = 0.0, first_fastest = 0.0;
+  for (const pb::FlowRow& r : pb::kTable31Flow) {
+    const std::vector<double> f = pb::table31_flow_frequencies(r.mu_v, false);
+    const double seed_flux = pb::table31_flow_frequencies(r.mu_v, true).at(0);
+    for (int k = 0; k < 3; ++k) worst[k] = std::max(worst[k], std::abs(f.at(k) / r.timoshenko[k] - 1.0));
+    worst_seed_flux = std::max(worst_seed_flux, std::abs(seed_flux / r.euler_bernoulli_half_coriolis[0] - 1.0));
+    if (r.mu_v == 0.0) first_at_rest = f[0];
+    first_fastest = f[0];
+    fmt::print(out, "{:5.2f} | {} | {} | {} | {} | {:9.4f} {:9.4f}\n", r.mu_v, three(f), three(r.timoshenko), three(r.seed),
+               three(r.zhai), seed_flux, r.euler_bernoulli_half_coriolis[0]);
+  }
+  const std::array<double, 3> flow_bound{4e-3, 7e-3, 1e-2};
+  for (int k = 0; k < 3; ++k)
+    rows.push_back(pipe_row(fmt::format("Table 3.1 flow, mode {} |μ_ω/Timoshenko − 1|", k + 1), worst[k], flow_bound[k],
+                            "plug-flow eq. (Païdoussis 3.38), collocation"));
+  rows.push_back(pipe_row("Table 3.1 flow, seed's flux, mode 1 |μ_ω/ref − 1|", worst_seed_flux, 3e-3,
+                          "E–B plug flow with half the Coriolis term"));
+  rows.push_back(pipe_row("first frequency change, μ_V 0 → 1.35 (falls)", first_fastest - first_at_rest, 0.0,
+                          "linear theory: flow damps and lowers mode 1"));
+
+  fmt::print(out, "\nSeed Table 3.1, rotating cantilever (μ_A = 3.9e3, μ_m = 0, 40 volumes)\n");
+  fmt::print(out, "{:>4} | {:^23} | {:^23} | {:^23} | {:^23} | {:^23}\n", "μ_Ω", "ours out of plane", "E–B flap",
+             "ours in plane", "E–B lead-lag", "seed");
+  const std::vector<double> rest = pb::table31_rotating_frequencies(0.0, 3).flap;
+  double worst_rest = 0.0, worst_flap = 0.0, worst_lag = 0.0;
+  for (int k = 0; k < 3; ++k) worst_rest = std::max(worst_rest, std::abs(rest.at(k) / pb::kTable31RotationTimoshenko[k] - 1.0));
+  const pb::RotationRow& still = pb::kTable31Rotation[0];
+  for (const pb::RotationRow& r : pb::kTable31Rotation) {
+    const pb::RotatingFrequencies f = pb::table31_rotating_frequencies(r.mu_omega, 3);
+    for (int k = 0; k < 2; ++k) {
+      worst_flap = std::max(worst_flap, std::abs((f.flap.at(k) - rest[k]) - (r.flap[k] - still.flap[k])) / rest[k]);
+      worst_lag = std::max(worst_lag, std::abs((f.lead_lag.at(k) - rest[k]) - (r.lead_lag[k] - still.lead_lag[k])) / rest[k]);
+    }
+    fmt::print(out, "{:4.0f} | {} | {} | {} | {} | {}\n", r.mu_omega, three(f.flap), three(r.flap), three(f.lead_lag),
+               three(r.lead_lag), three(r.seed));
+  }
+  fmt::print(out, "(a 0 is a mode not separated: near μ_Ω = 3 the third flap mode meets the first torsion mode)\n");
+  rows.push_back(pipe_row("Table 3.1 rotation, at rest |μ_ω/Timoshenko − 1|", worst_rest, 7e-3, "Timoshenko cantilever, collocation"));
+  rows.push_back(pipe_row("Table 3.1 rotation, flap rise − E–B rise (/f0)", worst_flap, 1e-2, "rotating E–B cantilever, collocation"));
+  rows.push_back(pipe_row("Table 3.1 rotation, lead-lag rise − E–B rise (/f0)", worst_lag, 3e-2, "rotating E–B cantilever, collocation"));
+
+  const double flutter = pb::instability_threshold(1e5, pb::kFlutterBeta, beam::EndCondition::free, 40, 5.0, 6.5, 1e-3);
+  const double pinned = pb::instability_threshold(1e5, 0.5, beam::EndCondition::pinned, 40, 2.5, 4.0, 1e-4);
+  const double clamped = pb::instability_threshold(1e5, 0.5, beam::EndCondition::clamped, 40, 5.5, 7.0, 1e-4);
+  fmt::print(out, "\nStability thresholds (μ_A = 1e5, 40 volumes): cantilever flutter β = 0.2 u_cf = {:.4f} (Gregory & Païdoussis "
+                  "≈ 5.6, collocation {:.4f}); divergence pinned-pinned {:.5f} (π), clamped-clamped {:.5f} (2π)\n\n",
+             flutter, pb::kFlutterEulerBernoulli, pinned, clamped);
+  rows.push_back(pipe_row("cantilever flutter β = 0.2, |u_cf − 5.5914|", std::abs(flutter - pb::kFlutterEulerBernoulli), 3e-2,
+                          "Païdoussis vol. 1 p. 112 (≈ 5.6); collocation"));
+  rows.push_back(pipe_row("pinned-pinned divergence |u/π − 1|", std::abs(pinned / std::numbers::pi - 1.0), 4e-3,
+                          "Païdoussis vol. 1 §3.3.6"));
+  rows.push_back(pipe_row("clamped-clamped divergence |u/2π − 1|", std::abs(clamped / (2.0 * std::numbers::pi) - 1.0), 2e-2,
+                          "Païdoussis vol. 1 §3.3.6"));
+  return rows;
+}
+
+}  // namespace fowtsim::driver
