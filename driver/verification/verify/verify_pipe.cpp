@@ -67,10 +67,16 @@ std::vector<VerificationRow> verify_pipe(std::FILE* out) {
       worst_flap = std::max(worst_flap, std::abs((f.flap.at(k) - rest[k]) - (r.flap[k] - still.flap[k])) / rest[k]);
       worst_lag = std::max(worst_lag, std::abs((f.lead_lag.at(k) - rest[k]) - (r.lead_lag[k] - still.lead_lag[k])) / rest[k]);
     }
-    fmt::print(out, "{:4.0f} | {} | {} | {} | {} | {}\n", r.mu_omega, three(f.flap), three(r.flap), three(f.lead_lag),
-               three(r.lead_lag), three(r.seed));
+    // A mode the classifier passed over (coupled to torsion) shows as 0, not as the next mode up.
+    auto matched = [](std::vector<double> ours, const std::array<double, 3>& reference) {
+      for (std::size_t k = 0; k < ours.size() && k < 3; ++k)
+        if (ours[k] > 1.5 * reference[k]) ours[k] = 0.0;
+      return ours;
+    };
+    fmt::print(out, "{:4.0f} | {} | {} | {} | {} | {}\n", r.mu_omega, three(matched(f.flap, r.flap)), three(r.flap),
+               three(matched(f.lead_lag, r.lead_lag)), three(r.lead_lag), three(r.seed));
   }
-  fmt::print(out, "(a 0 is a mode not separated: near μ_Ω = 3 the third flap mode meets the first torsion mode)\n");
+  fmt::print(out, "(0: a mode not separated: near μ_Ω = 3 the third flap mode meets the first torsion mode)\n");
   rows.push_back(pipe_row("Table 3.1 rotation, at rest |μ_ω/Timoshenko − 1|", worst_rest, 7e-3, "Timoshenko cantilever, collocation"));
   rows.push_back(pipe_row("Table 3.1 rotation, flap rise − E–B rise (/f0)", worst_flap, 1e-2, "rotating E–B cantilever, collocation"));
   rows.push_back(pipe_row("Table 3.1 rotation, lead-lag rise − E–B rise (/f0)", worst_lag, 3e-2, "rotating E–B cantilever, collocation"));

@@ -110,7 +110,7 @@ AffineRootLoad DynamicStepper::prepare(const BeamInput& input, const FrameAccele
   // motion w + (c, k)·Δa (root_residual_load), affine in Δa = solution + s·per_unit.
   const bool coupled = !direction.acceleration_m_s2.isZero(0.0) || !direction.angular_acceleration_rad_s2.isZero(0.0);
   if (coupled && model_.flow)
-    throw InputError({"beam", std::nullopt, "flow", "a pipe with a prescribed frame acceleration"},
+    throw InputError({"beam", std::nullopt, "flow", "give the pipe's frame acceleration in its input (step())"},
                      "a pipe cannot yet share its frame acceleration with the caller (the pressure's share "
                      "of the frame-acceleration load is not written)");
   AffineRootLoad root;
