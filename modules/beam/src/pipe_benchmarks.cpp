@@ -98,6 +98,36 @@ RotatingFrequencies table31_rotating_frequencies(double mu_omega, int count, int
   return {bending_frequencies(model, def, in, state, 1, count), bending_frequencies(model, def, in, state, 0, count)};
 }
 
+PipeDefinition semicircle(double mu_a, double mu_m, double mu_v_star) {
+  // cantilever() sizes the section for μ_A over 1 m; over L = π m the diameters scale by π.
+  const PipeDefinition straight = cantilever(mu_a, mu_m, 0.0);
+  PipeDefinition d{ReferenceLine::circular_arc(Vec3::Zero(), Mat3::Identity(), 1.0, M_PI)};
+  d.outer_diameter_m = M_PI * straight.outer_diameter_m;
+  d.inner_diameter_m = M_PI * straight.inner_diameter_m;
+  d.youngs_modulus_pa = straight.youngs_modulus_pa;
+  d.pipe_density_kg_m3 = straight.pipe_density_kg_m3;
+  d.fluid_density_kg_m3 = straight.fluid_density_kg_m3;
+  d.root_end = d.tip_end = EndCondition::clamped;
+  const double mf = fluid_mass(d);
+  d.flow_velocity_m_s = mf > 0.0 ? mu_v_star / std::sqrt(mf / bending_stiffness(d)) : 0.0;  // R = 1
+  return d;
+}
+
+std::vector<double> table32_in_plane_frequencies(double mu_a, double mu_m, double mu_v_star, int count, int segments) {
+  const PipeDefinition def = semicircle(mu_a, mu_m, mu_v_star);
+  const BeamModel model = discretise_pipe(def, segments);
+  BeamState state = make_state(model);
+  solve_static(model, BeamInput{}, state);
+  // In plane: the sections turn about y and the centre line stays in the x–z plane.
+  std::vector<double> out;
+  for (const DampedMode& m : damped_modes(model, BeamInput{}, state)) {
+    if (m.share(4) > 0.5 && m.share(1) < 0.5 && m.eigenvalue.imag() > 0.0)
+      out.push_back(dimensionless_frequency(def, m.eigenvalue.imag()));  // L = R = 1
+    if (static_cast<int>(out.size()) == count) break;
+  }
+  return out;
+}
+
 double largest_growth_rate(const PipeDefinition& def, int segments, int modes) {
   const BeamModel model = discretise_pipe(def, segments);
   const BeamState state = make_state(model);

@@ -80,6 +80,38 @@ inline constexpr std::array<RotationRow, 4> kTable31Rotation{{
 inline constexpr std::array<double, 3> kTable31RotationTimoshenko{3.5085, 21.7125, 59.6238};
 inline constexpr std::array<double, 3> kTable31RotationAnsys{3.50, 22.49, 58.28};
 
+// Seed §3.5.2: a semi-circular pipe of radius R = 1 m clamped at both ends (centre line from the
+// origin along z, bending towards +x: in plane = x–z), the wall and fluid of cantilever(), with
+// μ_A = A^p L²/I taken over its length L = πR (the seed does not say which length) and
+// μ_V* = V R √(m^f/EI). Pressure zero, inviscid.
+PipeDefinition semicircle(double mu_a, double mu_m, double mu_v_star);
+
+// The first `count` in-plane μ_ω* = Im λ R² √(m/EI) of the semicircle about its static equilibrium
+// under the flow (the flux turning in the bend pushes it outwards), seed 25 volumes.
+std::vector<double> table32_in_plane_frequencies(double mu_a, double mu_m, double mu_v_star, int count, int segments = 25);
+
+// Seed Table 3.2: μ_V* and, per row, the seed's combined model and the reference it was compared
+// with: Misra et al. [84] (μ_A = 1e4, μ_m = 0.5, three modes), Jung and Chung [87] (μ_A = 7.36e3,
+// μ_m = 0.26, two modes; third entry 0).
+struct CurvedRow {
+  double mu_v_star;
+  std::array<double, 3> seed, reference;
+};
+inline constexpr std::array<CurvedRow, 5> kTable32Misra{{
+    {0.0, {4.79, 9.44, 18.00}, {4.67, 9.84, 18.05}},
+    {1.0, {4.70, 9.57, 17.17}, {4.53, 9.88, 17.90}},
+    {2.0, {4.45, 9.83, 16.67}, {4.30, 9.92, 17.62}},
+    {3.0, {4.08, 10.17, 16.13}, {3.95, 9.77, 17.19}},
+    {4.0, {3.68, 10.34, 15.88}, {3.57, 9.65, 17.17}},
+}};
+inline constexpr std::array<CurvedRow, 5> kTable32JungChung{{
+    {0.0, {4.55, 9.00, 0.0}, {4.38, 9.60, 0.0}},
+    {1.0, {4.46, 9.04, 0.0}, {4.32, 9.66, 0.0}},
+    {2.0, {4.29, 9.17, 0.0}, {4.21, 9.64, 0.0}},
+    {3.0, {4.03, 9.30, 0.0}, {4.00, 9.66, 0.0}},
+    {4.0, {3.68, 9.34, 0.0}, {3.76, 9.62, 0.0}},
+}};
+
 // Cantilever flutter threshold u_cf for β = μ_m = 0.2: Païdoussis vol. 1 §3.5.2 (p. 112, Gregory &
 // Païdoussis 1966a, exact analysis) "u_cf ≈ 5.6"; scripts/pipe_linear_theory.py gives 5.5914.
 inline constexpr double kFlutterBeta = 0.2;
