@@ -223,23 +223,14 @@ RunReport run_pipe_scene(const RunRequest& request, const ProgressCallback& prog
   pipe_keys().read_into(deck.section("pipe"), p);
   FluidKeys f;
   if (deck.has("fluid")) fluid_keys().read_into(deck.section("fluid"), f);
-  beam::PipeDefinition def{beam::ReferenceLine::straight(Vec3::Zero(), Mat3::Identity(), p.length_m, [](double) { return 0.0; })};
-  def.outer_diameter_m = p.outer_diameter_m;
-  def.inner_diameter_m = p.inner_diameter_m;
-  def.youngs_modulus_pa = p.youngs_modulus_Pa;
-  def.poisson_ratio = p.poisson_ratio;
-  def.shear_coefficient = p.shear_coefficient;
-  def.pipe_density_kg_m3 = p.density_kg_m3;
-  def.stiffness_damping_s = p.damping_mu_s;
-  def.root_end = end_condition(p.root_end);
-  def.tip_end = end_condition(p.tip_end);
-  def.fluid_density_kg_m3 = f.density_kg_m3;
-  def.flow_velocity_m_s = f.velocity_m_s;
-  def.fluid_viscosity_pa_s = f.viscosity_Pa_s;
-  def.wall_roughness_m = f.roughness_m;
-  def.boundary_pressure_pa = f.pressure_Pa;
-  def.pressure_at_tip = f.pressure_at == "tip";
-  def.seed_momentum_flux = f.seed_momentum_flux;
+  const beam::PipeDefinition def{
+      .line = beam::ReferenceLine::straight(Vec3::Zero(), Mat3::Identity(), p.length_m, [](double) { return 0.0; }),
+      .outer_diameter_m = p.outer_diameter_m, .inner_diameter_m = p.inner_diameter_m,
+      .youngs_modulus_pa = p.youngs_modulus_Pa, .poisson_ratio = p.poisson_ratio, .shear_coefficient = p.shear_coefficient,
+      .pipe_density_kg_m3 = p.density_kg_m3, .fluid_density_kg_m3 = f.density_kg_m3, .flow_velocity_m_s = f.velocity_m_s,
+      .fluid_viscosity_pa_s = f.viscosity_Pa_s, .wall_roughness_m = f.roughness_m, .stiffness_damping_s = p.damping_mu_s,
+      .root_end = end_condition(p.root_end), .tip_end = end_condition(p.tip_end), .boundary_pressure_pa = f.pressure_Pa,
+      .pressure_at_tip = f.pressure_at == "tip", .seed_momentum_flux = f.seed_momentum_flux};
   BeamDynSetup setup = [&] {
     try {  // the pipe's own checks (bore smaller than the tube, a fluid for a flow), located at its key
       return BeamDynSetup{.definition = beam::pipe_beam_definition(def), .flow = beam::pipe_flow(def)};
