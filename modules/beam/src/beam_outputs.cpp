@@ -27,6 +27,11 @@ BeamOutputs beam_outputs(const BeamModel& model, const BeamState& state) {
   out.tip_position_m = state.position_m[last] + r * (rotation_matrix(0.5 * h * kappa) * model.tip_arm_m);
   out.tip_displacement_m = out.tip_position_m - model.tip_position_m;
   out.tip_rotation_wm = wiener_milenkovic(tip_frame * model.tip_orientation.transpose());
+  if (!model.free_tip()) {  // a held tip stays at its point; a pinned one turns with the last volume
+    out.tip_position_m = model.tip_position_m;
+    out.tip_displacement_m.setZero();
+    out.tip_rotation_wm = model.sections.back().pinned ? wiener_milenkovic(r * r0.transpose()) : Vec3::Zero();
+  }
   out.root_load = root_reaction(model, state);
   return out;
 }
