@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "fowtsim/beam/modal.hpp"
 #include "fowtsim/beam/solvers.hpp"
@@ -126,6 +127,23 @@ std::vector<double> table32_in_plane_frequencies(double mu_a, double mu_m, doubl
     if (static_cast<int>(out.size()) == count) break;
   }
   return out;
+}
+
+std::vector<double> white_noise_tip_response(const PipeDefinition& def, int segments, double dt_s, int steps) {
+  const BeamModel model = discretise_pipe(def, segments);
+  BeamState state = make_state(model);
+  DynamicStepper stepper(model, DynamicOptions{});
+  std::mt19937 random(7);
+  std::normal_distribution<double> force_n(0.0, 1e-3);
+  BeamInput in;
+  std::vector<double> tip;
+  tip.reserve(steps);
+  for (int i = 0; i < steps; ++i) {
+    in.tip_load(0) = force_n(random);
+    stepper.step(in, dt_s, state);
+    tip.push_back(state.position_m.back().x() - model.nodes.back().position_m.x());
+  }
+  return tip;
 }
 
 double largest_growth_rate(const PipeDefinition& def, int segments, int modes) {

@@ -112,6 +112,11 @@ inline constexpr std::array<CurvedRow, 5> kTable32JungChung{{
     {4.0, {3.68, 9.34, 0.0}, {3.76, 9.62, 0.0}},
 }};
 
+// The seed's time-domain method (§3.5.1): a white-noise lateral force on the tip (along x, normal,
+// σ = 1e-3 N, a fixed seed of std::mt19937), `steps` generalized-α steps of dt from rest; returns the
+// tip's x displacement after each step [m]. Its power spectrum's peaks are what the seed reports.
+std::vector<double> white_noise_tip_response(const PipeDefinition& def, int segments, double dt_s, int steps);
+
 // Cantilever flutter threshold u_cf for β = μ_m = 0.2: Païdoussis vol. 1 §3.5.2 (p. 112, Gregory &
 // Païdoussis 1966a, exact analysis) "u_cf ≈ 5.6"; scripts/pipe_linear_theory.py gives 5.5914.
 inline constexpr double kFlutterBeta = 0.2;
