@@ -192,7 +192,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> cases;
   auto* verify = app.add_subcommand("verify", "run verification cases against analytic or published answers");
   verify->add_option("cases", cases,
-                     "cases (default all): coupling, beam-rollup, beam-curved, beam-timestep, beam-beamdyn, beam-frequencies, sea, "
+                     "cases (default all): coupling, beam-rollup, beam-curved, beam-timestep, beam-beamdyn, beam-frequencies, pipe, sea, "
                      "aero, wind, multibody, control, flexbody, slender, free-decay, turbine-validation, turbine-oc3");
   std::string shared_dir = default_shared_dir().string();
   verify->add_option("--shared", shared_dir,
@@ -275,12 +275,14 @@ int main(int argc, char** argv) {
   }
   if (help_deck) {
     fmt::print("Toy coupled-oscillator scene:\n{}\nBeam scene (a deck with a top-level `beam`):\n{}\n"
+               "Pipe scene (a deck with a top-level `pipe`):\n{}\n"
                "Platform-loads scene (a deck with a top-level `platform_motion`):\n{}\n"
                "Floating-turbine scene (a deck with a top-level `structure`):\n{}\n"
                "Slender-body scene (a deck with a top-level `slender`):\n{}\n"
                "Turbulence deck (`fowtsim turbulence DECK`):\n{}\nFatigue configuration (`fowtsim post --del-config FILE`):\n{}\n"
                "Lifetime specification (`fowtsim post --lifetime FILE`):\n{}",
                io::describe_schema(toy_scene_schema()), io::describe_schema(beam_scene_schema()),
+               io::describe_schema(pipe_scene_schema()),
                io::describe_schema(platform_scene_schema()), io::describe_schema(floating_scene_schema()),
                io::describe_schema(slender_scene_schema()),
                io::describe_schema(io::Schema::map({{"wind", wind_schema()}})), io::describe_schema(fatigue_config_schema()),

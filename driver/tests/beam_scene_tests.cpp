@@ -11,6 +11,8 @@
 #include "beamdyn/beamdyn_setup.hpp"
 #include "decks/beam_deck.hpp"
 #include "fowtsim/beam/beam_outputs.hpp"
+#include "fowtsim/beam/pipe_benchmarks.hpp"
+#include "fowtsim/beam/solvers.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "fowtsim/testing/skip.hpp"
@@ -130,4 +132,34 @@ TEST_CASE("a dynamic beam run from t0 > 0 writes the states of stepping the beam
   CHECK(t.time() == std::vector<double>{1.0, 1.0 + 2 * 0.005, 1.0 + 4 * 0.005});
   REQUIRE(t.columns.size() == values.size() + 1);
   for (std::size_t c = 0; c < values.size(); ++c) CHECK(t.columns[c + 1].back() == values[c]);
+}
+
+TEST_CASE("the cantilever pipe deck settles on the static deflection of its pipe", "[verification][beam_scene]") {
+  // inputs/pipes/cantilever_flow.yaml is seed Table 3.1's last flow row (pipe_benchmarks::cantilever
+  // at μ_V = 1.35) under a steady tip force: the flow damps the first mode hard (ζ = 0.52), so after
+  // 2 s the tip rests where the static solve of the same pipe puts it. Measured difference 1.1e-9
+  // of the deflection (the .out's 10 digits and what is left of the transient); bound 1e-8.
+  const auto dir = testing::scratch_dir("pipe_scene_cantilever");
+  run_scene(run_request(testing::source_dir() / "inputs/pipes/cantilever_flow.yaml", dir / "pipe"), nullptr);
+  const io::ChannelTable t = io::read_channels(dir / "pipe.out");
+  const beam::BeamModel model = beam::discretise_pipe(beam::pipe_benchmarks::cantilever(1.8e4, 0.5035, 1.35), 40);
+  beam::BeamInput in;
+  in.tip_load << 0.01, 0.0, 0.0, 0.0, 0.0, 0.0;
+  beam::BeamState state = beam::make_state(model);
+  beam::solve_static(model, in, state);
+  const double expected = beam::beam_outputs(model, state).tip_displacement_m.x();
+  const double tip = t.columns[*t.find("TipTDxr")].back();
+  INFO("tip " << tip << " m, static " << expected << " m");
+  CHECK(expected > 1e-4);
+  CHECK(std::abs(tip / expected - 1.0) < 1e-8);
+}
+
+TEST_CASE("a pipe deck with a bore wider than its tube stops before the run, at the pipe", "[unit][beam_scene]") {
+  const auto dir = testing::scratch_dir("pipe_scene_bad");
+  const auto deck = dir / "pipe.yaml";
+  std::ofstream(deck) << "simulation: {analysis: static}\npipe:\n  length_m: 1\n  outer_diameter_m: 0.02\n  inner_diameter_m: 0.03\n"
+                         "  youngs_modulus_Pa: 1e9\n  density_kg_m3: 1000\n";
+  CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run"), nullptr),
+                    Catch::Contains("pipe.yaml:5") && Catch::Contains("inner_diameter_m"));
+  CHECK_FALSE(std::filesystem::exists(dir / "run.out"));
 }

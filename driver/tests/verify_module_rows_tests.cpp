@@ -1,4 +1,4 @@
-// The rows of `fowtsim verify aero|wind|multibody|control|flexbody|slender` (cli/verify_aero_wind.cpp,
+// The rows of `fowtsim verify aero|wind|multibody|control|flexbody|slender|pipe` (cli/verify_aero_wind.cpp,
 // cli/verify_multibody_control.cpp, cli/verify_flexbody.cpp: each row with its bound and the reason for it) all pass, and
 // none goes missing: the row counts are fixed, with or without the reference data of ../shared.
 #include <algorithm>
@@ -70,9 +70,17 @@ TEST_CASE("fowtsim verify slender: seed 004's riser and OC3 tower, modes, FD vs 
   check_case("slender", 7, 0);
 }
 
+TEST_CASE("fowtsim verify pipe: seed Table 3.1 and the classical thresholds of pipes conveying fluid",
+          "[verification][pipe]") {
+  // Table 3.1 with flow: modes 1–3 (3), the seed's flux (1), the first frequency's fall (1);
+  // rotating: at rest, flap rise, lead-lag rise (3); Table 3.2, two parameter sets (2); the seed's
+  // white-noise method (3); cantilever flutter, two divergences (3).
+  check_case("pipe", 16, 0);
+}
+
 TEST_CASE("fowtsim verify all includes the module cases", "[unit]") {
   const std::vector<std::string> names = verification_case_names();
-  for (const char* name : {"aero", "wind", "multibody", "control", "flexbody", "slender"}) {
+  for (const char* name : {"aero", "wind", "multibody", "control", "flexbody", "slender", "pipe"}) {
     INFO(name);
     CHECK(std::find(names.begin(), names.end(), name) != names.end());
   }

@@ -73,7 +73,11 @@ RunReport run_single_beam(const BeamDynSetup& setup_in, const SingleBeamRun& how
   BeamDynSetup setup = setup_in;
   if (request.t_max_s) setup.t_final_s = setup.t_initial_s + *request.t_max_s;
   if (request.dt_s) setup.dt_s = *request.dt_s;
-  const beam::BeamModel model = beam::discretise(setup.definition, how.segments);
+  const beam::BeamModel model = [&] {
+    beam::BeamModel m = beam::discretise(setup.definition, how.segments);
+    m.flow = setup.flow;
+    return m;
+  }();
 
   std::vector<std::string> channel_warnings;
   const auto all = beamdyn_channels();

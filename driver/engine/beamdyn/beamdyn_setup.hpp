@@ -10,6 +10,7 @@
 //    (global axes) about the global origin; the beam starts undeformed, moving rigidly with it;
 //  * gravity, DistrLoad, TipLoad and point loads are dead loads fixed in the global frame;
 //  * outputs are in the rotating root frame r, which is the floating frame f of the beam module.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ namespace fowtsim::driver {
 
 struct BeamDynSetup {
   beam::BeamDefinition definition;
+  std::optional<beam::InternalFlow> flow{};   // fluid flowing inside: a pipe (the `pipe` scene)
   Mat3 root_orientation0 = Mat3::Identity();  // root axes at t0 (columns, global) = GlbDCMᵀ
   Vec3 root_position_m = Vec3::Zero();        // GlbPos at t0, global [m]
   Vec3 angular_velocity_rad_s = Vec3::Zero(); // RootVel(4..6), global [rad/s]

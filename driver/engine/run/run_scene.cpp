@@ -25,8 +25,9 @@ namespace {
 
 // The top-level keys that make a deck a scene deck, with the scene each one picks, in the order
 // run_scene tries them.
-constexpr std::array<std::pair<const char*, const char*>, 5> kSceneKeys = {{
+constexpr std::array<std::pair<const char*, const char*>, 6> kSceneKeys = {{
     {"beam", "one clamped beam"},
+    {"pipe", "one pipe conveying fluid"},
     {"platform_motion", "platform loads on a prescribed motion"},
     {"structure", "floating turbine"},
     {"slender", "a slender body in waves"},
@@ -127,6 +128,7 @@ RunReport run_picked_scene(const RunRequest& request, const ProgressCallback& pr
   reject_foreign_input(request.deck_path);
   const std::string scene = scene_key(request.deck_path, request.deck_settings);
   if (scene == "beam") return run_beam_scene(request, progress);
+  if (scene == "pipe") return run_pipe_scene(request, progress);
   if (scene == "platform_motion") return run_platform_scene(request, progress);
   if (scene == "structure") return run_floating_scene(request, progress);
   if (scene == "slender") return run_slender_scene(request, progress);

@@ -17,6 +17,8 @@ std::string validate_scene_deck(const std::filesystem::path& path) {
   const io::DeckNode& root = loaded.root;
   if (root.find("beam")) {
     io::validate(beam_scene_schema(), std::move(loaded));
+  } else if (root.find("pipe")) {
+    io::validate(pipe_scene_schema(), std::move(loaded));
   } else if (root.find("platform_motion")) {
     io::validate(platform_scene_schema(), std::move(loaded));
   } else if (root.find("structure")) {

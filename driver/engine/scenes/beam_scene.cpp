@@ -10,6 +10,7 @@
 #include "decks/beam_deck.hpp"
 #include "decks/deck_helpers.hpp"
 #include "decks/deck_section.hpp"
+#include "fowtsim/beam/pipe.hpp"
 #include "fowtsim/core/error.hpp"
 #include "scenes/scene_runner.hpp"
 
@@ -71,33 +72,100 @@ const DeckSection<SceneKeys>& scene_keys() {
   return section;
 }
 
-}  // namespace
+// The `pipe:` and `fluid:` keys of the pipe scene (beam::PipeDefinition).
+struct PipeKeys {
+  int segments = 0;
+  std::string integrator;
+  double spectral_radius = 0.0;
+  double length_m = 0.0, outer_diameter_m = 0.0, inner_diameter_m = 0.0, youngs_modulus_Pa = 0.0, poisson_ratio = 0.0;
+  double shear_coefficient = 1.0, density_kg_m3 = 0.0, damping_mu_s = 0.0;
+  std::string root_end, tip_end;
+};
+struct FluidKeys {
+  double density_kg_m3 = 0.0, velocity_m_s = 0.0, viscosity_Pa_s = 0.0, roughness_m = 0.0, pressure_Pa = 0.0;
+  std::string pressure_at;
+  bool seed_momentum_flux = false;
+};
 
-Schema beam_scene_schema() {
+const DeckSection<PipeKeys>& pipe_keys() {
+  static const DeckSection<PipeKeys> section = [] {
+    auto positive = [](const char* unit, const char* doc) { return Schema::number().unit(unit).greater_than(0.0).doc(doc); };
+    DeckSection<PipeKeys> p;
+    p.key("segments", Schema::integer().at_least(1).at_most(100000).default_value(40).doc("finite volumes"), &PipeKeys::segments)
+        .key("integrator", Schema::choice({"generalized_alpha", "erk"}).default_value("generalized_alpha")
+                               .doc("integrator of the locally linear system in each step"),
+             &PipeKeys::integrator)
+        .key("spectral_radius", Schema::number().at_least(0.0).at_most(1.0).default_value(0.0).doc("generalized-α ρ∞"),
+             &PipeKeys::spectral_radius)
+        .key("length_m", positive("m", "length of the straight pipe, along the root frame's z"), &PipeKeys::length_m)
+        .key("outer_diameter_m", positive("m", "outer diameter of the wall"), &PipeKeys::outer_diameter_m)
+        .key("inner_diameter_m", Schema::number().unit("m").at_least(0.0).doc("bore (flow passage) diameter"),
+             &PipeKeys::inner_diameter_m)
+        .key("youngs_modulus_Pa", positive("Pa", "Young's modulus of the wall"), &PipeKeys::youngs_modulus_Pa)
+        .key("poisson_ratio", Schema::number().greater_than(-1.0).less_than(0.5).default_value(0.3).doc("G = E / (2 (1 + ν))"),
+             &PipeKeys::poisson_ratio)
+        .key("shear_coefficient", Schema::number().greater_than(0.0).default_value(1.0).doc("k in k G A (the seed: 1)"),
+             &PipeKeys::shear_coefficient)
+        .key("density_kg_m3", positive("kg_m3", "density of the wall"), &PipeKeys::density_kg_m3)
+        .key("damping_mu_s", Schema::number().unit("s").at_least(0.0).default_value(0.0).doc("stiffness-proportional damping μ_K"),
+             &PipeKeys::damping_mu_s)
+        .key("root_end", Schema::choice({"clamped", "pinned"}).default_value("clamped").doc("how the root is held"),
+             &PipeKeys::root_end)
+        .key("tip_end", Schema::choice({"free", "clamped", "pinned"}).default_value("free")
+                            .doc("how the tip is held (free: the fluid leaves as a jet)"),
+             &PipeKeys::tip_end);
+    return p;
+  }();
+  return section;
+}
+
+const DeckSection<FluidKeys>& fluid_keys() {
+  static const DeckSection<FluidKeys> section = [] {
+    auto non_negative = [](const char* unit, const char* doc) { return Schema::number().unit(unit).at_least(0.0).default_value(0.0).doc(doc); };
+    DeckSection<FluidKeys> f;
+    f.key("density_kg_m3", non_negative("kg_m3", "density of the fluid inside"), &FluidKeys::density_kg_m3)
+        .key("velocity_m_s", Schema::number().unit("m_s").default_value(0.0).doc("mean flow speed, + from root to tip"),
+             &FluidKeys::velocity_m_s)
+        .key("viscosity_Pa_s", non_negative("Pa_s", "dynamic viscosity (0: inviscid, no wall friction)"), &FluidKeys::viscosity_Pa_s)
+        .key("roughness_m", non_negative("m", "wall roughness ε of the Haaland friction factor"), &FluidKeys::roughness_m)
+        .key("pressure_Pa", Schema::number().unit("Pa").default_value(0.0).doc("internal gauge pressure at the end named by pressure_at"),
+             &FluidKeys::pressure_Pa)
+        .key("pressure_at", Schema::choice({"tip", "root"}).default_value("tip").doc("where pressure_Pa is given"),
+             &FluidKeys::pressure_at)
+        .key("seed_momentum_flux", Schema::boolean().default_value(false)
+                                       .doc("the seed's eq. 3.17 flux (half the flow's Coriolis force; for comparison only)"),
+             &FluidKeys::seed_momentum_flux);
+    return f;
+  }();
+  return section;
+}
+
+beam::EndCondition end_condition(const std::string& name) {
+  return name == "pinned" ? beam::EndCondition::pinned : name == "clamped" ? beam::EndCondition::clamped : beam::EndCondition::free;
+}
+
+// The scene's own keys around the structure key (`beam` or `pipe`) in the documented order:
+// simulation, output, the structure, root, gravity, loads (and fluid for the pipe).
+Schema scene_schema(std::vector<io::SchemaField> structure) {
   const Schema keys = scene_keys().schema();
   auto field = [&](const char* name) {
     for (const io::SchemaField& f : keys.spec().fields)
       if (f.key == name) return f;
     throw std::logic_error(std::string("beam scene key ") + name);
   };
-  // The documented order: simulation, output, beam, root, gravity, loads.
-  return Schema::map({
-      field("simulation"),
-      {"output", output_schema().optional().doc("what to write (BeamDyn channel names)")},
-      {"beam", beam_keys().schema().doc("the beam: reference line, sections, damping, discretisation")},
-      field("root"),
-      field("gravity_m_s2"),
-      field("loads"),
-  });
+  std::vector<io::SchemaField> fields{field("simulation"),
+                                      {"output", output_schema().optional().doc("what to write (BeamDyn channel names)")}};
+  for (io::SchemaField& f : structure) fields.push_back(std::move(f));
+  for (const char* name : {"root", "gravity_m_s2", "loads"}) fields.push_back(field(name));
+  return Schema::map(std::move(fields));
 }
 
-RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& progress) {
-  const io::ValidatedDeck deck = io::read_deck(beam_scene_schema(), request.deck_path, request.deck_settings);
-  BeamKeys beam;
-  beam_keys().read_into(deck.section("beam"), beam);
+// Runs one beam (or pipe) under the scene keys: root motion, gravity, dead loads, static or dynamic.
+RunReport run_one_beam(const io::ValidatedDeck& deck, BeamDynSetup setup, int segments, const std::string& integrator,
+                       double spectral_radius, const std::string& scene, const RunRequest& request,
+                       const ProgressCallback& progress) {
   SceneKeys keys;
   scene_keys().read_into(deck, keys);
-  BeamDynSetup setup{.definition = beam_definition(deck, "beam", beam)};
   setup.root_position_m = keys.root.position_m;
   setup.angular_velocity_rad_s = keys.root.angular_velocity_rad_s;
   setup.gravity_m_s2 = keys.gravity_m_s2;
@@ -106,14 +174,14 @@ RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& prog
   setup.dynamic = keys.analysis == "dynamic";
   setup.t_final_s = keys.t_max_s;
   setup.dt_s = keys.dt_s;
-  setup.spectral_radius = beam.spectral_radius;
+  setup.spectral_radius = spectral_radius;
 
   SingleBeamRun how;
-  how.segments = request.beam_segments.value_or(beam.segments);
-  how.integrator = request.beam_integrator.value_or(beam.integrator);
+  how.segments = request.beam_segments.value_or(segments);
+  how.integrator = request.beam_integrator.value_or(integrator);
   how.matrix_max_age = request.beam_matrix_max_age.value_or(how.matrix_max_age);
   how.skip_unknown_channels = false;
-  how.scene = "beam";
+  how.scene = scene;
   how.deck_hash = deck.hash();
   const OutputKeys output = output_keys(deck);
   how.decimation = output.decimation;
@@ -121,13 +189,57 @@ RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& prog
     how.channels = *output.channels;
     for (std::size_t i = 0; i < how.channels.size(); ++i)
       if (!find_beamdyn_channel(how.channels[i]))
-        throw InputError({"beam", std::nullopt, how.channels[i], ""},
+        throw InputError({scene, std::nullopt, how.channels[i], ""},
                          where(deck, fmt::format("output.channels[{}]", i)) + ": unknown beam channel '" + how.channels[i] + "'");
   }
   RunRequest r = request;
   if (!r.output_format) r.output_format = output.format;
   if (!r.output_base) r.output_base = std::filesystem::path("runs") / request.deck_path.stem();
   return run_single_beam(setup, how, r, progress);
+}
+
+}  // namespace
+
+Schema beam_scene_schema() {
+  return scene_schema({{"beam", beam_keys().schema().doc("the beam: reference line, sections, damping, discretisation")}});
+}
+
+RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& progress) {
+  const io::ValidatedDeck deck = io::read_deck(beam_scene_schema(), request.deck_path, request.deck_settings);
+  BeamKeys beam;
+  beam_keys().read_into(deck.section("beam"), beam);
+  return run_one_beam(deck, BeamDynSetup{.definition = beam_definition(deck, "beam", beam)}, beam.segments, beam.integrator,
+                      beam.spectral_radius, "beam", request, progress);
+}
+
+Schema pipe_scene_schema() {
+  return scene_schema({{"pipe", pipe_keys().schema().doc("the pipe: straight tube, wall, ends, discretisation")},
+                       {"fluid", fluid_keys().schema().optional().doc("the fluid inside; absent = an empty pipe")}});
+}
+
+RunReport run_pipe_scene(const RunRequest& request, const ProgressCallback& progress) {
+  const io::ValidatedDeck deck = io::read_deck(pipe_scene_schema(), request.deck_path, request.deck_settings);
+  PipeKeys p;
+  pipe_keys().read_into(deck.section("pipe"), p);
+  FluidKeys f;
+  if (deck.has("fluid")) fluid_keys().read_into(deck.section("fluid"), f);
+  const beam::PipeDefinition def{
+      .line = beam::ReferenceLine::straight(Vec3::Zero(), Mat3::Identity(), p.length_m, [](double) { return 0.0; }),
+      .outer_diameter_m = p.outer_diameter_m, .inner_diameter_m = p.inner_diameter_m,
+      .youngs_modulus_pa = p.youngs_modulus_Pa, .poisson_ratio = p.poisson_ratio, .shear_coefficient = p.shear_coefficient,
+      .pipe_density_kg_m3 = p.density_kg_m3, .fluid_density_kg_m3 = f.density_kg_m3, .flow_velocity_m_s = f.velocity_m_s,
+      .fluid_viscosity_pa_s = f.viscosity_Pa_s, .wall_roughness_m = f.roughness_m, .stiffness_damping_s = p.damping_mu_s,
+      .root_end = end_condition(p.root_end), .tip_end = end_condition(p.tip_end), .boundary_pressure_pa = f.pressure_Pa,
+      .pressure_at_tip = f.pressure_at == "tip", .seed_momentum_flux = f.seed_momentum_flux};
+  BeamDynSetup setup = [&] {
+    try {  // the pipe's own checks (bore smaller than the tube, a fluid for a flow), located at its key
+      return BeamDynSetup{.definition = beam::pipe_beam_definition(def), .flow = beam::pipe_flow(def)};
+    } catch (const InputError& e) {
+      const std::string key = "pipe." + e.context().variable;
+      throw InputError(e.context(), where(deck, deck.has(key) ? key : "pipe") + ": " + e.message());
+    }
+  }();
+  return run_one_beam(deck, std::move(setup), p.segments, p.integrator, p.spectral_radius, "pipe", request, progress);
 }
 
 }  // namespace fowtsim::driver

@@ -27,11 +27,12 @@ void bench_startup(std::FILE* out);  // bench_startup.cpp
 void bench_turbine(std::FILE* out);    // bench_flexible_turbine.cpp
 void bench_stability(std::FILE* out);  // bench_stability.cpp
 std::vector<VerificationRow> verify_sea(std::FILE* out);  // verify_sea.cpp
+std::vector<VerificationRow> verify_pipe(std::FILE* out);  // verify_pipe.cpp
 void bench_hydro(std::FILE* out);
 void bench_waves(std::FILE* out);
 
 std::vector<std::string> verification_case_names() {
-  return {"coupling", "beam-rollup", "beam-curved", "beam-timestep", "beam-beamdyn", "beam-frequencies", "sea",
+  return {"coupling", "beam-rollup", "beam-curved", "beam-timestep", "beam-beamdyn", "beam-frequencies", "pipe", "sea",
           "aero",     "wind",        "multibody",   "control",       "flexbody",     "slender",     "free-decay",   "turbine-validation",
           "turbine-oc3"};
 }
@@ -43,6 +44,7 @@ std::vector<VerificationRow> run_verification_case(const std::string& name, std:
   if (name == "beam-timestep") return verify_beam_timestep(out);
   if (name == "beam-beamdyn") return verify_beam_beamdyn(out);
   if (name == "beam-frequencies") return verify_beam_frequencies(out);
+  if (name == "pipe") return verify_pipe(out);
   if (name == "sea") return verify_sea(out);
   if (name == "aero") return verify_aero(out);  // verify_aero_wind.cpp
   if (name == "wind") return verify_wind(out);

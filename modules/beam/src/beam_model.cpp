@@ -32,6 +32,7 @@ Mat6 interpolate_station(const BeamDefinition& def, double eta, Get get) {
 
 void validate(const BeamDefinition& def) {
   if (def.stations.size() < 1) fail("stations", "need at least one station");
+  if (def.root_end == EndCondition::free) fail("root_end", "the root is clamped or pinned, not free");
   for (std::size_t i = 0; i < def.stations.size(); ++i) {
     const Station& s = def.stations[i];
     if (i > 0 && !(s.eta > def.stations[i - 1].eta))
@@ -92,6 +93,18 @@ Mat6 mass_at(const BeamDefinition& def, double eta) {
   return interpolate_station(def, eta, [](const Station& s) { return s.mass; });
 }
 
+// A held end section becomes a pin (seed §3.4.3's imaginary segment with θ mirrored equal): it
+// joins the node to its ghost, the node's mirror image through the end point with the node's own
+// orientation, so the section sits on the end point, carries no moment and keeps it in place.
+static void hold_by_pin(SectionModel& sec, const NodeModel& node, const Vec3& end_point) {
+  sec.pinned = true;
+  sec.alpha = 0.5;
+  sec.length_m = 2.0 * (node.position_m - end_point).norm();
+  const Vec3 chord = sec.inboard == kRootEnd ? Vec3(node.position_m - end_point) : Vec3(end_point - node.position_m);
+  sec.chord_ref = node.orientation.transpose() * (2.0 * chord) / sec.length_m;
+  sec.curvature_ref.setZero();
+}
+
 BeamModel discretise(const BeamDefinition& def, int segments) {
   if (segments < 1) fail("segments", "need at least one segment, got " + std::to_string(segments));
   validate(def);
@@ -140,6 +153,24 @@ BeamModel discretise(const BeamDefinition& def, int segments) {
 
   const LinePoint tip = def.line.at(length);
   const NodeModel& last = model.nodes.back();
+  if (def.root_end == EndCondition::pinned) hold_by_pin(model.sections.front(), model.nodes.front(), root.position_m);
+  if (def.tip_end != EndCondition::free) {
+    // The held tip: a section from the last node to the tip frame, midway as at the root, or the
+    // pin's mirrored segment.
+    SectionModel sec;
+    sec.inboard = segments - 1;
+    sec.outboard = kTipEnd;
+    sec.length_m = length - last.s_m;
+    sec.alpha = 0.5;
+    const Vec3 psi = rotation_vector(last.orientation.transpose() * tip.frame);
+    const Mat3 r_sec = last.orientation * rotation_matrix(0.5 * psi);
+    sec.chord_ref = r_sec.transpose() * (tip.position_m - last.position_m) / sec.length_m;
+    sec.curvature_ref = psi / sec.length_m;
+    sec.stiffness = stiffness_at(def, (length - 0.5 * sec.length_m) / length);
+    sec.damping = mu * sec.stiffness;
+    if (def.tip_end == EndCondition::pinned) hold_by_pin(sec, last, tip.position_m);
+    model.sections.push_back(sec);
+  }
   model.tip_position_m = tip.position_m;
   model.tip_orientation = tip.frame;
   model.tip_arm_m = last.orientation.transpose() * (tip.position_m - last.position_m);

@@ -18,7 +18,7 @@ BeamOutputs beam_outputs(const BeamModel& model, const BeamState& state) {
   // The tip lies half a segment beyond the last node. Carry the curvature change of the last
   // section, κ = (ψ − ψ_ref)/Δs, on to the tip instead of holding the half segment rigid: the
   // tip rotation error drops from O(Δs) (a tip moment bends that half segment too) to O(Δs²).
-  const SectionModel& sec = model.sections.back();
+  const SectionModel& sec = model.sections[last];
   const Mat3& r_in = sec.inboard < 0 ? model.root_orientation : state.orientation[sec.inboard];
   const Vec3 kappa = rotation_vector(r_in.transpose() * r) / sec.length_m - sec.curvature_ref;
   const double h = model.length_m - model.nodes[last].s_m;
@@ -27,6 +27,11 @@ BeamOutputs beam_outputs(const BeamModel& model, const BeamState& state) {
   out.tip_position_m = state.position_m[last] + r * (rotation_matrix(0.5 * h * kappa) * model.tip_arm_m);
   out.tip_displacement_m = out.tip_position_m - model.tip_position_m;
   out.tip_rotation_wm = wiener_milenkovic(tip_frame * model.tip_orientation.transpose());
+  if (!model.free_tip()) {  // a held tip stays at its point; a pinned one turns with the last volume
+    out.tip_position_m = model.tip_position_m;
+    out.tip_displacement_m.setZero();
+    out.tip_rotation_wm = model.sections.back().pinned ? wiener_milenkovic(r * r0.transpose()) : Vec3::Zero();
+  }
   out.root_load = root_reaction(model, state);
   return out;
 }
@@ -38,7 +43,7 @@ Vec6 section_load_at(const BeamModel& model, const BeamState& state, double eta)
   double best_distance = std::numeric_limits<double>::infinity();
   for (std::size_t j = 0; j < model.sections.size(); ++j) {
     const SectionModel& sec = model.sections[j];
-    const double s_a = sec.inboard < 0 ? 0.0 : model.nodes[sec.inboard].s_m;
+    const double s_a = sec.inboard >= 0 ? model.nodes[sec.inboard].s_m : sec.pinned ? -0.5 * sec.length_m : 0.0;
     const double distance = std::abs(s_a + sec.alpha * sec.length_m - s);
     if (distance < best_distance) {
       best_distance = distance;
@@ -47,9 +52,15 @@ Vec6 section_load_at(const BeamModel& model, const BeamState& state, double eta)
   }
   const SectionModel& sec = model.sections[best];
   const Vec6 at_rest = Vec6::Zero();
-  const NodePose a = node_pose(model, state, sec.inboard), b = node_pose(model, state, sec.outboard);
-  const Vec12 loads = section_loads(sec, a, b, sec.inboard < 0 ? &at_rest : &state.velocity[sec.inboard],
-                                    &state.velocity[sec.outboard]);
+  NodePose a, b;
+  section_poses(model, state, sec, a, b);
+  // Velocities of the ends (a pin's ghost moves as u_g = −u, θ_g = θ of its node).
+  auto velocity = [&](int end, int other) {
+    const auto node = [&](int n) { return n >= 0 ? state.velocity[n] : at_rest; };
+    return end_motion(sec, end, node(other), node(end));
+  };
+  const Vec6 va = velocity(sec.inboard, sec.outboard), vb = velocity(sec.outboard, sec.inboard);
+  const Vec12 loads = section_loads(sec, a, b, &va, &vb);
   // Loads on the inboard node, moment about it → about the section point x_a + α (x_b − x_a).
   Vec6 out = loads.head<6>();
   out.tail<3>() -= (sec.alpha * (b.position_m - a.position_m)).cross(Vec3(out.head<3>()));
@@ -59,8 +70,10 @@ Vec6 section_load_at(const BeamModel& model, const BeamState& state, double eta)
 double strain_energy(const BeamModel& model, const BeamState& state) {
   double energy = 0.0;
   SectionLinearization lin;
+  NodePose a, b;
   for (const SectionModel& sec : model.sections) {
-    linearize_section(sec, node_pose(model, state, sec.inboard), node_pose(model, state, sec.outboard), lin);
+    section_poses(model, state, sec, a, b);
+    linearize_section(sec, a, b, lin);
     energy += 0.5 * sec.length_m * lin.strain.dot(lin.resultant);
   }
   return energy;

@@ -102,29 +102,36 @@ AffineRootLoad DynamicStepper::prepare(const BeamInput& input, const FrameAccele
                            "singular step matrix (zero mass or inertia?)");
   }
   const BlockTridiagonal& lhs = matrix_rebuilt_ ? rebuilt_ : state.step_matrix.factored;
+  Vec6 root_offset_storage;
+  const Vec6* root_offset =
+      root_flow_offset(model_, input, state, root_offset_storage) ? &root_offset_storage : nullptr;
 
   // The root load at the balance time is the root section's share of the residual at the trial
   // motion w + (c, k)·Δa (root_residual_load), affine in Δa = solution + s·per_unit.
   const bool coupled = !direction.acceleration_m_s2.isZero(0.0) || !direction.angular_acceleration_rad_s2.isZero(0.0);
+  if (coupled && model_.flow)
+    throw InputError({"beam", std::nullopt, "flow", "give the pipe's frame acceleration in its input (step())"},
+                     "a pipe cannot yet share its frame acceleration with the caller (the pressure's share "
+                     "of the frame-acceleration load is not written)");
   AffineRootLoad root;
   if (coupled) {
     frame_acceleration_load(model_, state, w_stiffness_, direction.acceleration_m_s2,
                             direction.angular_acceleration_rad_s2, per_unit_);
     lhs.solve_in_place(solution_, per_unit_);
     // The trial vectors are reused as scratch below and restored by finish() from v0, a0.
-    const Vec6 base = root_residual_load(model_, state, w_damping_, w_stiffness_);
+    const Vec6 base = root_residual_load(model_, state, w_damping_, w_stiffness_, root_offset);
     v1_ = w_damping_ + weights_.damping * solution_;
     q_ = w_stiffness_ + weights_.stiffness * solution_;
-    root.at_zero = root_residual_load(model_, state, v1_, q_);
+    root.at_zero = root_residual_load(model_, state, v1_, q_, root_offset);
     v1_ = w_damping_ + weights_.damping * per_unit_;
     q_ = w_stiffness_ + weights_.stiffness * per_unit_;
-    root.per_unit = root_residual_load(model_, state, v1_, q_) - base;
+    root.per_unit = root_residual_load(model_, state, v1_, q_, root_offset) - base;
   } else {
     lhs.solve_in_place(solution_);
     per_unit_.setZero();
     v1_ = w_damping_ + weights_.damping * solution_;
     q_ = w_stiffness_ + weights_.stiffness * solution_;
-    root.at_zero = root_residual_load(model_, state, v1_, q_);
+    root.at_zero = root_residual_load(model_, state, v1_, q_, root_offset);
   }
   return root;
 }

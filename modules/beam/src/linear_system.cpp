@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include "flow_terms.hpp"
 #include "fowtsim/core/rotation.hpp"
 #include "section_mechanics.hpp"
 
@@ -62,8 +63,9 @@ struct NodeBlocks {
   Vec6 rhs;
 };
 
+// `pressures`: the pipe's face pressures (face_pressures), empty for a beam.
 void node_blocks(const BeamModel& model, const BeamInput& input, const BeamState& state, int i,
-                 Inertia inertia, NodeBlocks& out) {
+                 Inertia inertia, const std::vector<double>& pressures, NodeBlocks& out) {
   out.mass.setZero();
   out.damping.setZero();
   out.stiffness.setZero();
@@ -75,13 +77,29 @@ void node_blocks(const BeamModel& model, const BeamInput& input, const BeamState
                   out.stiffness, out.rhs);
   if (i == model.node_count() - 1)
     add_dead_load(input.tip_load, state.orientation[i] * model.tip_arm_m, out.stiffness, out.rhs);
+  if (model.flow)
+    add_flow_node_terms(model, input, state, i, pressures.back(), inertia == Inertia::included, out.mass,
+                        out.damping, out.stiffness, out.rhs);
 }
 
-// Adds a section's 12×12 tangent to the blocks of its nodes (a < 0: the clamped root).
+// The pipe's face pressures and the resultant offset of section j (nullptr for a beam).
+std::vector<double> pressures_of(const BeamModel& model, const BeamInput& input, const BeamState& state) {
+  std::vector<double> p;
+  if (model.flow) face_pressures(model, input, state, p);
+  return p;
+}
+
+const Vec6* section_offset(const BeamModel& model, const std::vector<double>& pressures, int j, Vec6& storage) {
+  if (!model.flow) return nullptr;
+  storage = flow_section_offset(*model.flow, pressures[j]);
+  return &storage;
+}
+
+// Adds a section's 12×12 tangent to the blocks of its nodes (a or b < 0: a held end).
 void scatter(const Mat12& t, int a, int b, BlockTridiagonal& m) {
-  m.diag(b) += t.block<6, 6>(6, 6);
-  if (a < 0) return;
-  m.diag(a) += t.block<6, 6>(0, 0);
+  if (b >= 0) m.diag(b) += t.block<6, 6>(6, 6);
+  if (a >= 0) m.diag(a) += t.block<6, 6>(0, 0);
+  if (a < 0 || b < 0) return;
   m.upper(a) = t.block<6, 6>(0, 6);  // each off-diagonal block belongs to one section
   m.lower(a) = t.block<6, 6>(6, 0);
 }
@@ -100,9 +118,10 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
                Inertia inertia, LinearizedBeam& out) {
   const int n = model.node_count();
   out.resize(n);
+  const std::vector<double> pressures = pressures_of(model, input, state);
   NodeBlocks nb;
   for (int i = 0; i < n; ++i) {
-    node_blocks(model, input, state, i, inertia, nb);
+    node_blocks(model, input, state, i, inertia, pressures, nb);
     out.mass[i] = nb.mass;
     out.damping.diag(i) = nb.damping;
     out.stiffness.diag(i) = nb.stiffness;
@@ -111,44 +130,73 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
   if (inertia == Inertia::static_only) out.damping.set_zero();
 
   SectionLinearization lin;
-  Mat12 tangent;
-  for (const SectionModel& sec : model.sections) {
+  Mat12 tangent, flow_damping;
+  Vec6 offset;
+  NodePose pa, pb;
+  for (int j = 0; j < static_cast<int>(model.sections.size()); ++j) {
+    const SectionModel& sec = model.sections[j];
     const int a = sec.inboard, b = sec.outboard;
-    linearize_section(sec, node_pose(model, state, a), node_pose(model, state, b), lin);
-    out.rhs.segment<6>(6 * b) += lin.node_loads.tail<6>();
+    section_poses(model, state, sec, pa, pb);
+    linearize_section(sec, pa, pb, lin, section_offset(model, pressures, j, offset));
+    if (b >= 0) out.rhs.segment<6>(6 * b) += lin.node_loads.tail<6>();
     if (a >= 0) out.rhs.segment<6>(6 * a) += lin.node_loads.head<6>();
     section_tangent(lin, sec.stiffness, 1.0, tangent);
+    fold_pinned_end(sec, tangent);
     scatter(tangent, a, b, out.stiffness);
     if (inertia == Inertia::static_only) continue;
     section_tangent(lin, sec.damping, 0.0, tangent);
+    if (model.flow) {
+      flow_section_damping(*model.flow, sec, pa, pb, flow_damping);
+      tangent += flow_damping;
+    }
+    fold_pinned_end(sec, tangent);
     scatter(tangent, a, b, out.damping);
   }
 }
 
 void assemble_step_matrix(const BeamModel& model, const BeamInput& input, const BeamState& state,
                           const StepWeights& w, BlockTridiagonal& lhs) {
+  const std::vector<double> pressures = pressures_of(model, input, state);
   NodeBlocks nb;
   for (int i = 0; i < model.node_count(); ++i) {
-    node_blocks(model, input, state, i, Inertia::included, nb);
+    node_blocks(model, input, state, i, Inertia::included, pressures, nb);
     lhs.diag(i) = w.mass * nb.mass + w.damping * nb.damping + w.stiffness * nb.stiffness;
   }
   // Per section: k K + c C = −G (k C + c D) B − k·geometric.
   SectionLinearization lin;
-  Mat12 tangent;
-  for (const SectionModel& sec : model.sections) {
-    const int a = sec.inboard, b = sec.outboard;
-    linearize_section(sec, node_pose(model, state, a), node_pose(model, state, b), lin);
+  Mat12 tangent, flow_damping;
+  Vec6 offset;
+  NodePose pa, pb;
+  for (int j = 0; j < static_cast<int>(model.sections.size()); ++j) {
+    const SectionModel& sec = model.sections[j];
+    section_poses(model, state, sec, pa, pb);
+    linearize_section(sec, pa, pb, lin, section_offset(model, pressures, j, offset));
     section_tangent(lin, w.stiffness * sec.stiffness + w.damping * sec.damping, w.stiffness, tangent);
-    scatter(tangent, a, b, lhs);
+    if (model.flow) {
+      flow_section_damping(*model.flow, sec, pa, pb, flow_damping);
+      tangent += w.damping * flow_damping;
+    }
+    fold_pinned_end(sec, tangent);
+    scatter(tangent, sec.inboard, sec.outboard, lhs);
   }
+}
+
+bool root_flow_offset(const BeamModel& model, const BeamInput& input, const BeamState& state, Vec6& out) {
+  if (!model.flow) return false;
+  out = flow_section_offset(*model.flow, pressures_of(model, input, state).front());
+  return true;
 }
 
 Vec6 root_reaction(const BeamModel& model, const BeamState& state) {
   const SectionModel& sec = model.sections.front();
   const Vec6 at_rest = Vec6::Zero();
-  return section_loads(sec, node_pose(model, state, -1), node_pose(model, state, 0), &at_rest,
-                       &state.velocity[0])
-      .head<6>();
+  NodePose a, b;
+  section_poses(model, state, sec, a, b);
+  const Vec6 root_motion = end_motion(sec, kRootEnd, state.velocity[0], at_rest);
+  Vec6 load = section_loads(sec, a, b, &root_motion, &state.velocity[0]).head<6>();
+  // About the root point: for a pin the loads on the ghost act at the section, on the end point.
+  if (sec.pinned) load.tail<3>() -= (sec.alpha * (b.position_m - a.position_m)).cross(Vec3(load.head<3>()));
+  return load;
 }
 
 }  // namespace fowtsim::beam

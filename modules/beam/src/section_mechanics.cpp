@@ -39,10 +39,11 @@ Vec9 reduced(const Vec12& q) {
 }
 
 void linearize_section(const SectionModel& sec, const NodePose& a, const NodePose& b,
-                       SectionLinearization& out) {
+                       SectionLinearization& out, const Vec6* offset) {
   Vec3 psi;
   kinematics(sec, a, b, psi, out);
   out.resultant = sec.stiffness * out.strain;
+  if (offset) out.resultant += *offset;
   out.node_loads = node_loads_of(out, out.resultant);
 
   // Strain map B on the reduced columns: [−E, E d̃ Φ_a, E d̃ Φ_b; 0, −Y, Y] with E = R_jᵀ/Δs,
@@ -115,7 +116,7 @@ void section_tangent(const SectionLinearization& lin, const Mat6& weight, double
 }
 
 Vec12 section_residual_loads(const SectionModel& sec, const NodePose& a, const NodePose& b,
-                             const Vec9& w_k, const Vec9& w_c) {
+                             const Vec9& w_k, const Vec9& w_c, const Vec6* offset) {
   Vec3 psi;
   SectionLinearization k;
   kinematics(sec, a, b, psi, k);
@@ -137,7 +138,8 @@ Vec12 section_residual_loads(const SectionModel& sec, const NodePose& a, const N
   Vec3 phi_k, phi_c;
   const Vec6 e_k = strain_increment(w_k, phi_k);
   const Vec6 e_c = strain_increment(w_c, phi_c);
-  const Vec6 s_base = sec.stiffness * k.strain;
+  Vec6 s_base = sec.stiffness * k.strain;
+  if (offset) s_base += *offset;
   Vec12 out = node_loads_of(k, s_base + sec.stiffness * e_k + sec.damping * e_c);
 
   // Geometric part at the base resultant (as in linearize_section): the loads turn with δφ_j and
@@ -153,9 +155,9 @@ Vec12 section_residual_loads(const SectionModel& sec, const NodePose& a, const N
 }
 
 Vec12 section_loads(const SectionModel& sec, const NodePose& a, const NodePose& b,
-                    const Vec6* velocity_a, const Vec6* velocity_b) {
+                    const Vec6* velocity_a, const Vec6* velocity_b, const Vec6* offset) {
   SectionLinearization lin;
-  linearize_section(sec, a, b, lin);
+  linearize_section(sec, a, b, lin, offset);
   if (!velocity_a || !velocity_b) return lin.node_loads;
   Vec12 q_dot;
   q_dot << *velocity_a, *velocity_b;

@@ -39,10 +39,44 @@ struct NodePose {
   Mat3 orientation;
 };
 
-// The base pose of node n, or of the clamped root for n < 0.
+// The base pose of node n, or of the held root (kRootEnd) or tip (kTipEnd).
 inline NodePose node_pose(const BeamModel& model, const BeamState& state, int n) {
-  if (n < 0) return {model.root_position_m, model.root_orientation};
+  if (n == kRootEnd) return {model.root_position_m, model.root_orientation};
+  if (n == kTipEnd) return {model.tip_position_m, model.tip_orientation};
   return {state.position_m[n], state.orientation[n]};
+}
+
+// The base poses of a section's two ends. The held end of a pinned section is the ghost: the
+// mirror image of the node through the end point, with the node's orientation.
+inline void section_poses(const BeamModel& model, const BeamState& state, const SectionModel& sec, NodePose& a,
+                          NodePose& b) {
+  a = node_pose(model, state, sec.inboard);
+  b = node_pose(model, state, sec.outboard);
+  if (!sec.pinned) return;
+  if (sec.inboard == kRootEnd) a = {2.0 * a.position_m - b.position_m, b.orientation};
+  else b = {2.0 * b.position_m - a.position_m, a.orientation};
+}
+
+// The motion (increment, velocity) of a section end: its node's, none for a held end, and for
+// a pin's ghost (−u, θ) of the node at the other end.
+inline Vec6 end_motion(const SectionModel& sec, int end, const Vec6& other_node_motion, const Vec6& node_motion) {
+  if (end >= 0) return node_motion;
+  if (!sec.pinned) return Vec6::Zero();
+  Vec6 g = other_node_motion;
+  g.head<3>() *= -1.0;
+  return g;
+}
+
+// A section tangent (rows and columns [a; b]) reduced to its real nodes: the ghost of a pinned
+// end moves as u_ghost = −u, θ_ghost = θ of its node, and its own rows (the pin's reaction) go to
+// the support. Columns of a clamped end are dropped by the scatter.
+inline void fold_pinned_end(const SectionModel& sec, Mat12& t) {
+  if (!sec.pinned) return;
+  const int ghost = sec.inboard == kRootEnd ? 0 : 6, node = 6 - ghost;
+  t.block<12, 3>(0, node) -= t.block<12, 3>(0, ghost);
+  t.block<12, 3>(0, node + 3) += t.block<12, 3>(0, ghost + 3);
+  t.middleRows<6>(ghost).setZero();
+  t.middleCols<6>(ghost).setZero();
 }
 
 // A section linearised about the base configuration.
@@ -57,8 +91,11 @@ struct SectionLinearization {
   Mat12x9 geometric;      // ∂(node loads)/∂q at fixed S, reduced columns
 };
 
+// `offset` (optional, section frame) is added to the elastic resultant: a resultant that does not
+// come from the strains, such as the pressure and momentum flux of fluid flowing inside a pipe
+// (internal_flow.hpp). It rotates with the section, so it enters the loads and the geometric part.
 void linearize_section(const SectionModel& sec, const NodePose& a, const NodePose& b,
-                       SectionLinearization& out);
+                       SectionLinearization& out, const Vec6* offset = nullptr);
 
 // [f_a; m_a; f_b; m_b] of a section-frame resultant s: G s.
 Vec12 node_loads_of(const SectionLinearization& lin, const Vec6& s);
@@ -77,10 +114,11 @@ void section_tangent(const SectionLinearization& lin, const Mat6& weight, double
 // geometric part applied as the vector formulas they stand for (header, "Increments"). w_k and
 // w_c are the reduced node vectors [u_a − u_b; θ_a; θ_b]. Exact to rounding against the matrices.
 Vec12 section_residual_loads(const SectionModel& sec, const NodePose& a, const NodePose& b,
-                             const Vec9& w_k, const Vec9& w_c);
+                             const Vec9& w_k, const Vec9& w_c, const Vec6* offset = nullptr);
 
 // Loads only, with optional strain-rate damping D B q̇: for outputs and tests.
 Vec12 section_loads(const SectionModel& sec, const NodePose& a, const NodePose& b,
-                    const Vec6* velocity_a = nullptr, const Vec6* velocity_b = nullptr);
+                    const Vec6* velocity_a = nullptr, const Vec6* velocity_b = nullptr,
+                    const Vec6* offset = nullptr);
 
 }  // namespace fowtsim::beam

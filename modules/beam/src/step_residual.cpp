@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "flow_terms.hpp"
 #include "section_mechanics.hpp"
 
 namespace fowtsim::beam {
@@ -57,18 +58,25 @@ Vec6 node_residual(const BeamModel& model, const BeamInput& input, const BeamSta
   return out;
 }
 
-// [u_a − u_b; θ_a; θ_b] of a nodal vector, node a < 0 being the clamped root (zero).
-Vec9 reduced_pair(const VecX& q, int a, int b) {
+// The increments of a section's two ends from a nodal vector: a held end does not move, a pinned
+// end's ghost moves as u_g = −u, θ_g = θ of its node.
+Vec6 end_motion(const VecX& q, const SectionModel& sec, int end, int other) {
+  const auto node = [&](int n) { return n >= 0 ? Vec6(q.segment<6>(6 * n)) : Vec6::Zero(); };
+  return end_motion(sec, end, node(other), node(end));
+}
+
+// [u_a − u_b; θ_a; θ_b] of a nodal vector.
+Vec9 reduced_pair(const VecX& q, const SectionModel& sec) {
+  const Vec6 a = end_motion(q, sec, sec.inboard, sec.outboard), b = end_motion(q, sec, sec.outboard, sec.inboard);
   Vec9 out;
-  out.head<3>() = -q.segment<3>(6 * b);
-  if (a >= 0) {
-    out.head<3>() += q.segment<3>(6 * a);
-    out.segment<3>(3) = q.segment<3>(6 * a + 3);
-  } else {
-    out.segment<3>(3).setZero();
-  }
-  out.tail<3>() = q.segment<3>(6 * b + 3);
+  out << a.head<3>() - b.head<3>(), a.tail<3>(), b.tail<3>();
   return out;
+}
+
+// Adds a section's loads on its ends to the residual: held ends, and a pin's ghost, go to the support.
+void add_section_loads(const SectionModel& sec, const Vec12& loads, VecX& residual) {
+  if (sec.outboard >= 0) residual.segment<6>(6 * sec.outboard) += loads.tail<6>();
+  if (sec.inboard >= 0) residual.segment<6>(6 * sec.inboard) += loads.head<6>();
 }
 
 }  // namespace
@@ -78,12 +86,41 @@ void step_residual(const BeamModel& model, const BeamInput& input, const BeamSta
   for (int n = 0; n < model.node_count(); ++n)
     residual.segment<6>(6 * n) = node_residual(model, input, state, n, a.segment<6>(6 * n),
                                                w_c.segment<6>(6 * n), w_k.segment<6>(6 * n));
-  for (const SectionModel& sec : model.sections) {
-    const int ia = sec.inboard, ib = sec.outboard;
-    const Vec12 loads = section_residual_loads(sec, node_pose(model, state, ia), node_pose(model, state, ib),
-                                               reduced_pair(w_k, ia, ib), reduced_pair(w_c, ia, ib));
-    residual.segment<6>(6 * ib) += loads.tail<6>();
-    if (ia >= 0) residual.segment<6>(6 * ia) += loads.head<6>();
+  NodePose pa, pb;
+  if (!model.flow) {
+    for (const SectionModel& sec : model.sections) {
+      section_poses(model, state, sec, pa, pb);
+      add_section_loads(sec, section_residual_loads(sec, pa, pb, reduced_pair(w_k, sec), reduced_pair(w_c, sec)),
+                        residual);
+    }
+    return;
+  }
+  // A pipe: the flow's blocks (flow_terms.hpp) applied to the trial vectors, R += r − M a − C w_c − K w_k,
+  // and the pressure and momentum flux as a resultant offset of every section.
+  std::vector<double> pressures;
+  face_pressures(model, input, state, pressures);
+  Mat6 mass, damping, stiffness;
+  Vec6 rhs;
+  for (int n = 0; n < model.node_count(); ++n) {
+    mass.setZero();
+    damping.setZero();
+    stiffness.setZero();
+    rhs.setZero();
+    add_flow_node_terms(model, input, state, n, pressures.back(), true, mass, damping, stiffness, rhs);
+    residual.segment<6>(6 * n) += rhs - mass * a.segment<6>(6 * n) - damping * w_c.segment<6>(6 * n) -
+                                  stiffness * w_k.segment<6>(6 * n);
+  }
+  Mat12 flow_damping;
+  for (int j = 0; j < static_cast<int>(model.sections.size()); ++j) {
+    const SectionModel& sec = model.sections[j];
+    section_poses(model, state, sec, pa, pb);
+    const Vec6 offset = flow_section_offset(*model.flow, pressures[j]);
+    Vec12 loads = section_residual_loads(sec, pa, pb, reduced_pair(w_k, sec), reduced_pair(w_c, sec), &offset);
+    flow_section_damping(*model.flow, sec, pa, pb, flow_damping);  // zero at a held end
+    Vec12 rates;
+    rates << end_motion(w_c, sec, sec.inboard, sec.outboard), end_motion(w_c, sec, sec.outboard, sec.inboard);
+    loads -= flow_damping * rates;
+    add_section_loads(sec, loads, residual);
   }
 }
 
@@ -109,11 +146,14 @@ void frame_acceleration_load(const BeamModel& model, const BeamState& state, con
   }
 }
 
-Vec6 root_residual_load(const BeamModel& model, const BeamState& state, const VecX& w_c, const VecX& w_k) {
+Vec6 root_residual_load(const BeamModel& model, const BeamState& state, const VecX& w_c, const VecX& w_k,
+                        const Vec6* root_offset) {
   const SectionModel& sec = model.sections.front();
-  return section_residual_loads(sec, node_pose(model, state, -1), node_pose(model, state, sec.outboard),
-                                reduced_pair(w_k, -1, sec.outboard), reduced_pair(w_c, -1, sec.outboard))
-      .head<6>();
+  NodePose a, b;
+  section_poses(model, state, sec, a, b);
+  Vec6 load = section_residual_loads(sec, a, b, reduced_pair(w_k, sec), reduced_pair(w_c, sec), root_offset).head<6>();
+  if (sec.pinned) load.tail<3>() -= (sec.alpha * (b.position_m - a.position_m)).cross(Vec3(load.head<3>()));
+  return load;
 }
 
 }  // namespace fowtsim::beam

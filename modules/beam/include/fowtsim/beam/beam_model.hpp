@@ -10,8 +10,10 @@
 // segment (§2.5: mirrored displacements make the root section's displacement zero). The free
 // tip has no section (the seed's zero-stiffness last cross-section): the half segment beyond
 // node N−1 moves rigidly with it.
+#include <optional>
 #include <vector>
 
+#include "fowtsim/beam/internal_flow.hpp"
 #include "fowtsim/beam/reference_line.hpp"
 #include "fowtsim/core/types.hpp"
 
@@ -26,18 +28,28 @@ struct Station {
                              // [kg/m, kg, kg·m] — ẽ the mass-centre offset, i the inertia
 };
 
+// How an end of the beam is held. The root is clamped or pinned; the tip free, clamped or pinned.
+enum class EndCondition { free, clamped, pinned };
+
 struct BeamDefinition {
   ReferenceLine line;
   std::vector<Station> stations;     // eta ascending from 0 to 1; linear interpolation between
   Vec6 stiffness_damping = Vec6::Zero();  // μ: section damping D = diag(μ) C [s] (BeamDyn damp_type 1;
                                           // the seed's μ_K is μ with all six entries equal, eq. 2.61)
   double mass_damping_1_s = 0.0;          // μ_M of eq. 2.61 [1/s]
+  EndCondition root_end = EndCondition::clamped;  // clamped or pinned
+  EndCondition tip_end = EndCondition::free;      // free, clamped or pinned
 };
+
+inline constexpr int kRootEnd = -1;  // SectionModel::inboard of the root section
+inline constexpr int kTipEnd = -2;   // SectionModel::outboard of a held tip's section
 
 // One section (cross-section j between two nodes) of the discretised beam.
 struct SectionModel {
-  int inboard = -1;        // node index on the root side; −1 = the clamped root
-  int outboard = 0;        // node index on the tip side
+  int inboard = kRootEnd;  // node index on the root side; kRootEnd = the held root
+  int outboard = 0;        // node index on the tip side; kTipEnd = the held tip
+  bool pinned = false;     // its held end is a pin: the seed's imaginary segment (§3.4.3) mirroring
+                           // the node through the end point (u_ghost = −u, θ_ghost = θ: no moment)
   double alpha = 0.5;      // position of the section between the two nodes, fraction from inboard
   double length_m = 0.0;   // Δs^j: arclength between the two nodes [m]
   Mat6 stiffness;          // C at the section [N, N·m, N·m²]
@@ -62,7 +74,8 @@ struct NodeModel {
 
 struct BeamModel {
   std::vector<NodeModel> nodes;
-  std::vector<SectionModel> sections;  // sections[j] is inboard of nodes[j]
+  std::vector<SectionModel> sections;  // sections[j] is inboard of nodes[j]; a held tip adds
+                                       // sections[N] between the last node and the tip
   Vec3 root_position_m = Vec3::Zero();  // clamped root point in f [m]
   Mat3 root_orientation = Mat3::Identity();  // clamped root frame
   Vec3 tip_arm_m = Vec3::Zero();        // tip point − last node, in the last node's local frame [m]
@@ -70,8 +83,10 @@ struct BeamModel {
   Mat3 tip_orientation = Mat3::Identity();
   double mass_damping_1_s = 0.0;        // μ_M
   double length_m = 0.0;
+  std::optional<InternalFlow> flow;     // fluid flowing inside: a pipe (pipe.hpp); none for a beam
 
   int node_count() const { return static_cast<int>(nodes.size()); }
+  bool free_tip() const { return sections.back().outboard != kTipEnd; }
   int dof_count() const { return 6 * node_count(); }
 };
 

@@ -63,8 +63,13 @@ void frame_acceleration_load(const BeamModel& model, const BeamState& state, con
 
 // The load the root section puts on the root (force; moment about the root point, in f) at a trial
 // motion, consistent with step_residual: the root's share of r − C w_c − K w_k. Affine in (w_c, w_k).
+// A pipe passes the root face's pressure and momentum flux (root_flow_offset).
 Vec6 root_residual_load(const BeamModel& model, const BeamState& state, const VecX& damping_vector,
-                        const VecX& stiffness_vector);
+                        const VecX& stiffness_vector, const Vec6* root_offset = nullptr);
+
+// The section-frame resultant of a pipe's pressure and momentum flux at the root face (none for a
+// beam: returns false).
+bool root_flow_offset(const BeamModel& model, const BeamInput& input, const BeamState& state, Vec6& out);
 
 // Loads the beam puts on its root (force; moment about the root point), in f, including
 // strain-rate damping of the state's velocities.
