@@ -29,7 +29,7 @@ RrBladeComparison rr_blade_comparison(const std::filesystem::path& blade_deck, c
   c.omega_rad_s = 12.1 * 2 * std::numbers::pi / 60;
   // ElastoDyn's own rule: BldNodes = 17 equal elements of the NREL 5MW deck, one midpoint each.
   c.elastodyn_rule =
-      flexbody::mass_properties(flexbody::sample_blade(b, {flexbody::BladeRule::Kind::ElastoDynNodes, {}, 17}));
+      flexbody::mass_properties(flexbody::sample_blade(b, {flexbody::BladeRule::Kind::ElastoDynNodes, {}, 17, {}}));
   c.rr_rest_hz = flexbody::natural_frequencies_hz(rr);
   c.rr_spinning_hz = flexbody::natural_frequencies_hz(rr, c.omega_rad_s);
   const beam::BeamModel model = beam::discretise(driver::beamdyn_setup(io::read_beamdyn_driver(beamdyn_driver)).definition, 48);

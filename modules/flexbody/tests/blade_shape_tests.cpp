@@ -135,5 +135,5 @@ TEST_CASE("Blade input checks", "[unit]") {
   b = uniform_blade(0, 0);
   b.tip_radius = b.hub_radius;
   CHECK_THROWS_AS(sample_blade(b), fowtsim::InputError);
-  CHECK_THROWS_AS(blade_points(uniform_blade(0, 0), {BladeRule::Kind::ElastoDynNodes, {}, 0}), fowtsim::InputError);
+  CHECK_THROWS_AS(blade_points(uniform_blade(0, 0), {BladeRule::Kind::ElastoDynNodes, {}, 0, {}}), fowtsim::InputError);
 }

@@ -17,7 +17,7 @@ namespace {
 ElastoDynBlade nrel5mw() { return read_elastodyn_blade(FOWTSIM_SOURCE_DIR "/inputs/nrel5mw/blade_elastodyn.yaml"); }
 
 // ElastoDyn's rule with the OC3 deck's BldNodes = 17 (NRELOffshrBsline5MW_OC3Hywind_ElastoDyn.dat).
-const BladeRule kElastoDyn17{BladeRule::Kind::ElastoDynNodes, {}, 17};
+const BladeRule kElastoDyn17{BladeRule::Kind::ElastoDynNodes, {}, 17, {}};
 
 const double kRated = 12.1 * 2 * std::numbers::pi / 60;  // 12.1 rpm [rad/s] (38060)
 
