@@ -82,9 +82,12 @@ void node_blocks(const BeamModel& model, const BeamInput& input, const BeamState
                         out.damping, out.stiffness, out.rhs);
 }
 
-// The pipe's face pressures and the resultant offset of section j (nullptr for a beam).
-std::vector<double> pressures_of(const BeamModel& model, const BeamInput& input, const BeamState& state) {
-  std::vector<double> p;
+// The pipe's face pressures (empty for a beam), in a workspace kept per thread so that a step
+// allocates only at its first call; valid until the next call. And the resultant offset of section
+// j (nullptr for a beam).
+const std::vector<double>& pressures_of(const BeamModel& model, const BeamInput& input, const BeamState& state) {
+  thread_local std::vector<double> p;
+  p.clear();
   if (model.flow) face_pressures(model, input, state, p);
   return p;
 }
@@ -118,7 +121,7 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
                Inertia inertia, LinearizedBeam& out) {
   const int n = model.node_count();
   out.resize(n);
-  const std::vector<double> pressures = pressures_of(model, input, state);
+  const std::vector<double>& pressures = pressures_of(model, input, state);
   NodeBlocks nb;
   for (int i = 0; i < n; ++i) {
     node_blocks(model, input, state, i, inertia, pressures, nb);
@@ -156,7 +159,7 @@ void linearize(const BeamModel& model, const BeamInput& input, const BeamState& 
 
 void assemble_step_matrix(const BeamModel& model, const BeamInput& input, const BeamState& state,
                           const StepWeights& w, BlockTridiagonal& lhs) {
-  const std::vector<double> pressures = pressures_of(model, input, state);
+  const std::vector<double>& pressures = pressures_of(model, input, state);
   NodeBlocks nb;
   for (int i = 0; i < model.node_count(); ++i) {
     node_blocks(model, input, state, i, Inertia::included, pressures, nb);

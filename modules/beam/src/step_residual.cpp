@@ -97,7 +97,9 @@ void step_residual(const BeamModel& model, const BeamInput& input, const BeamSta
   }
   // A pipe: the flow's blocks (flow_terms.hpp) applied to the trial vectors, R += r − M a − C w_c − K w_k,
   // and the pressure and momentum flux as a resultant offset of every section.
-  std::vector<double> pressures;
+  // Workspace kept per thread so that the step allocates only at its first call (face_pressures
+  // assigns n + 1 values into it; its capacity stays).
+  thread_local std::vector<double> pressures;
   face_pressures(model, input, state, pressures);
   Mat6 mass, damping, stiffness;
   Vec6 rhs;
