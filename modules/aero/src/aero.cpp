@@ -212,7 +212,7 @@ void evaluate(const Params& params, const Aero::Input& in, const Aero::State& st
         qs_tangential = ap * s.tangential_velocity_m_s;
       } else {
         // Warm start from this node's root of the previous evaluation on the same Output.
-        sol = solve_section(s, polar, params, previous.root_phi_c_rad);
+        sol = solve_section(s, polar, params, previous.root_phi_c_rad, previous.root_slope_per_rad);
         if (redistribute && sol.status == InductionStatus::converged) {
           // Glauert/Pitt–Peters: a_skew = a [1 + K (r/R) tan(χ/2) cos ψ], ψ measured from the
           // downwind side of the disk (where the in-plane inflow points), wake skew χ = (0.6 a + 1) χ0
