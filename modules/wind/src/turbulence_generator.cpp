@@ -9,10 +9,6 @@
 #include <span>
 #include <vector>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/fft.hpp"
 #include "fowtsim/wind/coherent_sampler.hpp"
@@ -22,31 +18,6 @@
 namespace fowtsim::wind {
 namespace {
 using Complex = std::complex<double>;
-
-// Asks Linux for transparent huge pages on the 2 MB-aligned interior of [p, p + bytes) (THP in its
-// `madvise` mode, as on this machine kind): the 145 MB field and the 97 MB spectra then fault in
-// 2 MB at a time instead of 4 kB (the faults were ≈ 15 % of the default deck's set-up). Advice only:
-// refused or elsewhere, nothing changes; never the values.
-void advise_huge_pages(const void* p, std::size_t bytes) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
-  const std::uintptr_t first = reinterpret_cast<std::uintptr_t>(p);
-  const std::uintptr_t begin = (first + kHuge - 1) & ~(kHuge - 1), end = (first + bytes) & ~(kHuge - 1);
-  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#else
-  (void)p;
-  (void)bytes;
-#endif
-}
-
-// v = n zeros, in memory advised as above before it is first touched.
-template <class T>
-void assign_zeros_on_huge_pages(std::vector<T>& v, std::size_t n) {
-  v.clear();
-  v.reserve(n);
-  advise_huge_pages(v.data(), n * sizeof(T));
-  v.assign(n, T{});
-}
 }  // namespace
 
 // How: the quadrant q = round(k / 2⁵¹) and the remainder k − q 2⁵¹ ∈ [−2⁵⁰, 2⁵⁰] are exact
@@ -113,7 +84,7 @@ GeneratedTurbulence generate_turbulence(const WindParams& params) {
   f.periodic = true;
   const int n = f.nt;
   const std::size_t points = static_cast<std::size_t>(f.ny) * f.nz;
-  assign_zeros_on_huge_pages(f.grid, static_cast<std::size_t>(n) * points * 3);
+  f.grid.assign(static_cast<std::size_t>(n) * points * 3, 0.0f);
   f.n_tower = t.tower_points ? turbsim_tower_point_count(f.z_bottom_m, f.dz_m) : 0;
   f.tower.assign(static_cast<std::size_t>(n) * f.n_tower * 3, 0.0f);
 
@@ -136,8 +107,7 @@ GeneratedTurbulence generate_turbulence(const WindParams& params) {
   std::vector<Complex> x_block(points * kFrequencyBlock);
   double amplitudes[kFrequencyBlock];
   std::vector<float> series_block(kPointBlock * static_cast<std::size_t>(n));
-  std::vector<Complex> spectra;  // [point][bin]; bins 0 and past `top` stay zero
-  assign_zeros_on_huge_pages(spectra, points * bins);
+  std::vector<Complex> spectra(points * bins);  // [point][bin]; bins 0 and past `top` stay zero
   // signal[t] = Σ_k Y_k e^{+i 2π k t / n} over the Hermitian-extended spectrum Y_0 … Y_{n/2}.
   InverseRealFft inverse(static_cast<std::size_t>(n));
   const auto inverse_dft = [&inverse, bins](const Complex* y) {
