@@ -107,7 +107,7 @@ TEST_CASE("warm-started solves find the cold solve's root", "[unit][aero]") {
       const SectionInflow s = section(p, k, wind, tsr * wind * (1.5 + p.blade[k].span_m) / 63.0, 0.02 * std::cos(0.3 * step));
       const SectionSolution cold = solve_section(s, polar, p);
       const SectionSolution warm = solve_section(s, polar, p, previous.root_phi_c_rad, previous.root_slope_per_rad);
-      REQUIRE(cold.status == InductionStatus::converged);
+      REQUIRE(cold.status == InductionStatus::converged);  // exact: attached-flow sections always have a root
       REQUIRE(warm.status == InductionStatus::converged);
       worst = std::max(worst, std::abs(warm.root_phi_c_rad - cold.root_phi_c_rad));
       if (step > 0) {
