@@ -176,7 +176,17 @@ void evaluate(const Params& params, const Aero::Input& in, const Aero::State& st
       out.disturbed_inflow_m_s.col(i) = in.inflow_velocity_m_s.col(i) + disturbance;
       const Vec3 relative = out.disturbed_inflow_m_s.col(i) - in.node_velocity_m_s.col(i);
       const double theta = node.twist_rad + in.blade_pitch_rad(blade);
-      const Mat3 t_gb = in.node_orientation[i] * rotation_z(theta);
+      // cos θ, sin θ of the last evaluation on this Output while θ is the same (the pitch moves at
+      // the large step, the held evaluations of the small steps reuse them): the bits of rotation_z.
+      NodeResult& cached = out.nodes[i];
+      if (theta != cached.theta_rad) {
+        cached.theta_rad = theta;
+        cached.cos_theta = std::cos(theta);
+        cached.sin_theta = std::sin(theta);
+      }
+      Mat3 rotation_theta;
+      rotation_theta << cached.cos_theta, -cached.sin_theta, 0.0, cached.sin_theta, cached.cos_theta, 0.0, 0.0, 0.0, 1.0;
+      const Mat3 t_gb = in.node_orientation[i] * rotation_theta;
       const Vec3 r_vec = radial(i);
       SectionInflow s;
       s.axial_velocity_m_s = relative.dot(t_gb.col(0));
@@ -212,7 +222,7 @@ void evaluate(const Params& params, const Aero::Input& in, const Aero::State& st
         qs_tangential = ap * s.tangential_velocity_m_s;
       } else {
         // Warm start from this node's root of the previous evaluation on the same Output.
-        sol = solve_section(s, polar, params, previous.root_phi_c_rad);
+        sol = solve_section(s, polar, params, previous.root_phi_c_rad, previous.root_slope_per_rad);
         if (redistribute && sol.status == InductionStatus::converged) {
           // Glauert/Pitt–Peters: a_skew = a [1 + K (r/R) tan(χ/2) cos ψ], ψ measured from the
           // downwind side of the disk (where the in-plane inflow points), wake skew χ = (0.6 a + 1) χ0

@@ -1,5 +1,6 @@
 #include "fowtsim/aero/bem.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -78,9 +79,12 @@ class Residual {
   double sx_, sy_, velocity_ratio_, solidity_;
 };
 
+constexpr double kTolerance = 1e-12;  // on φ [rad], both ways below
+constexpr double kWarmHalfWidth = 0.01;  // [rad]: a few times the change of φ over one small step
+constexpr double kSecantHalfWidth = 0.1;  // [rad]: how far Newton–secant may follow the root
+
 // The root of R(φ_c) in a bracket [a, b] with R(a) R(b) <= 0, by Brent's method.
 double root_in_bracket(const Residual& f, double a, double b, double fa, double fb) {
-  constexpr double kTolerance = 1e-12;  // on φ [rad]
   constexpr int kMaxIterations = 200;   // bisection alone halves π in 45 steps
   return fowtsim::brent_root([&f](double phi_c) { return f(phi_c).residual; }, a, b, fa, fb, kTolerance,
                              kMaxIterations);
@@ -88,17 +92,88 @@ double root_in_bracket(const Residual& f, double a, double b, double fa, double 
 
 bool opposite(double fa, double fb) { return (fa <= 0.0 && fb >= 0.0) || (fa >= 0.0 && fb <= 0.0); }
 
-// Finds a root of R(φ_c): Ning's three brackets in order, then a scan of both half circles
-// (the poles at φ_c = 0, ±π are never inside a bracket). Returns false when there is none.
-bool find_root(const Residual& f, double& phi_c, double warm_start) {
-  constexpr double kWarmHalfWidth = 0.01;  // [rad]: a few times the change of φ over one small step
+// Brent's stopping width at φ_c (brent.hpp): a secant step below it ends the iteration.
+double converged_step(double phi_c) { return 2.0 * std::numeric_limits<double>::epsilon() * std::abs(phi_c) + 0.5 * kTolerance; }
+
+// A root with R's value there, when the search already has it (saves the caller one evaluation).
+struct Root {
+  double phi_c = 0.0;
+  bool has_value = false;
+  Residual::Value value;
+  double slope = std::numeric_limits<double>::quiet_NaN();  // dR/dφ_c near the root (secant) [1/rad]
+};
+
+// Newton–secant from the warm start, inside the window ±kSecantHalfWidth around it clipped to its
+// half circle clear of the poles: the first step is Newton's with the slope of the previous solve
+// (or a secant over a 1e-7 rad probe without one), then secant steps. Stops when the next step
+// would be below Brent's tolerance (the iterate is then within it of the root: the secant step
+// estimates its error to first order) and returns that iterate with its residual. Any sign change
+// seen brackets the root; a step leaving that bracket hands it to Brent. Returns false, for the
+// brackets of find_root, when a step leaves the window with no sign change seen, the secant is
+// flat, or 12 steps did not converge.
+bool secant_from_warm_start(const Residual& f, double warm_start, double warm_slope, Root& root) {
+  constexpr int kMaxSteps = 12;
+  constexpr double kProbe = 1e-7;  // [rad]
+  // The window, clipped to the warm start's half circle clear of its poles.
+  const double side_low = warm_start > 0.0 ? kBracketOffset : -(kPi - kBracketOffset);
+  const double side_high = warm_start > 0.0 ? kPi - kBracketOffset : -kBracketOffset;
+  const double window_low = std::max(warm_start - kSecantHalfWidth, side_low);
+  const double window_high = std::min(warm_start + kSecantHalfWidth, side_high);
+  double x0 = warm_start;
+  Residual::Value v0 = f(x0);
+  double x1 = std::isfinite(warm_slope) && warm_slope != 0.0 ? x0 - v0.residual / warm_slope : x0 + kProbe;
+  if (std::abs(x1 - x0) <= converged_step(x0)) {  // the inflow has not moved the root (repeated inputs)
+    root = {x0, true, v0, warm_slope};
+    return true;
+  }
+  // A sign change seen so far: R(low) <= 0 <= R(high) or the reverse (NaN: none yet).
+  double bracket_a = std::numeric_limits<double>::quiet_NaN(), bracket_b = bracket_a, f_a = 0.0, f_b = 0.0;
+  for (int step = 0; step < kMaxSteps; ++step) {
+    if (v0.residual == 0.0) {
+      root = {x0, true, v0, warm_slope};
+      return true;
+    }
+    const bool bracketed = std::isfinite(bracket_a);
+    const bool inside = bracketed ? (x1 - bracket_a) * (x1 - bracket_b) < 0.0 : (x1 > window_low && x1 < window_high);
+    if (!inside) {
+      if (!bracketed) return false;
+      root.phi_c = root_in_bracket(f, bracket_a, bracket_b, f_a, f_b);
+      return true;
+    }
+    const Residual::Value v1 = f(x1);
+    if (opposite(v0.residual, v1.residual)) {
+      bracket_a = x0, bracket_b = x1, f_a = v0.residual, f_b = v1.residual;
+    } else if (bracketed && opposite(v1.residual, f_a)) {
+      bracket_b = x1, f_b = v1.residual;
+    } else if (bracketed) {
+      bracket_a = x1, f_a = v1.residual;
+    }
+    const double slope = (v1.residual - v0.residual) / (x1 - x0);
+    if (!(std::abs(slope) > 0.0) || !std::isfinite(slope)) return false;
+    const double next = -v1.residual / slope;
+    if (std::abs(next) <= converged_step(x1) || v1.residual == 0.0) {
+      root = {x1, true, v1, slope};
+      return true;
+    }
+    x0 = x1;
+    v0 = v1;
+    x1 += next;
+  }
+  return false;
+}
+
+// Finds a root of R(φ_c): from the warm start (Newton–secant, then the bracket of its window),
+// then Ning's three brackets in order, then a scan of both half circles (the poles at φ_c = 0, ±π
+// are never inside a bracket). Returns false when there is none.
+bool find_root(const Residual& f, Root& root, double warm_start, double warm_slope) {
   const double a = warm_start - kWarmHalfWidth, b = warm_start + kWarmHalfWidth;
   // Only inside one half circle, clear of the poles at 0 and ±π that no bracket may contain.
   if (std::isfinite(warm_start) && (a > kBracketOffset || b < -kBracketOffset) && std::abs(a) < kPi - kBracketOffset &&
       std::abs(b) < kPi - kBracketOffset) {
+    if (secant_from_warm_start(f, warm_start, warm_slope, root)) return true;
     const double fa = f(a).residual, fb = f(b).residual;
     if (opposite(fa, fb)) {
-      phi_c = root_in_bracket(f, a, b, fa, fb);
+      root.phi_c = root_in_bracket(f, a, b, fa, fb);
       return true;
     }
   }
@@ -108,7 +183,7 @@ bool find_root(const Residual& f, double& phi_c, double warm_start) {
   for (const auto& ab : pairs) {
     const double fa = f(ab[0]).residual, fb = f(ab[1]).residual;
     if (opposite(fa, fb)) {
-      phi_c = root_in_bracket(f, ab[0], ab[1], fa, fb);
+      root.phi_c = root_in_bracket(f, ab[0], ab[1], fa, fb);
       return true;
     }
   }
@@ -118,7 +193,7 @@ bool find_root(const Residual& f, double& phi_c, double warm_start) {
     for (int i = 1; i <= kScanIntervals; ++i) {
       const double b = side * (kBracketOffset + i * h), fb = f(b).residual;
       if (opposite(fa, fb)) {
-        phi_c = side > 0.0 ? root_in_bracket(f, a, b, fa, fb) : root_in_bracket(f, b, a, fb, fa);
+        root.phi_c = side > 0.0 ? root_in_bracket(f, a, b, fa, fb) : root_in_bracket(f, b, a, fb, fa);
         return true;
       }
       a = b;
@@ -191,7 +266,8 @@ SectionSolution section_with_induction(const SectionInflow& in, const Polar& pol
   return s;
 }
 
-SectionSolution solve_section(const SectionInflow& in, const Polar& polar, const Params& params, double warm_start) {
+SectionSolution solve_section(const SectionInflow& in, const Polar& polar, const Params& params, double warm_start,
+                              double warm_slope) {
   const double vx = in.axial_velocity_m_s, vy = in.tangential_velocity_m_s;
   if (!std::isfinite(vx) || !std::isfinite(vy) || !std::isfinite(in.theta_rad) ||
       !std::isfinite(in.local_radius_m)) {
@@ -227,14 +303,16 @@ SectionSolution solve_section(const SectionInflow& in, const Polar& polar, const
     return section_with_induction(in, polar, v.a, 0.0, base);
   }
   const Residual f(in, polar, params);
-  double phi_c = 0.0;
-  if (!find_root(f, phi_c, warm_start)) {
+  Root root;
+  if (!find_root(f, root, warm_start, warm_slope)) {
     base.status = InductionStatus::no_root;
     base.residual_evaluations = f.evaluations;
     return section_with_induction(in, polar, 0.0, 0.0, base);
   }
-  const Residual::Value v = f(phi_c);
+  const double phi_c = root.phi_c;
+  const Residual::Value v = root.has_value ? root.value : f(phi_c);
   base.root_phi_c_rad = phi_c;
+  base.root_slope_per_rad = root.slope;
   base.loss_factor = v.loss;
   base.residual_evaluations = f.evaluations;
   // a and a' consistent with tan φ = V_x(1−a)/(V_y(1+a')) at the root: take the better-conditioned

@@ -1,5 +1,6 @@
 #include "fowtsim/aero/polar.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <span>
@@ -26,7 +27,11 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 
 double wrap_angle(double angle_rad) {
   constexpr double two_pi = 2.0 * std::numbers::pi;
-  double a = std::fmod(angle_rad + std::numbers::pi, two_pi);
+  // Already in [−π, π) (the induction solver's angles): fmod of a value in [0, 2π) is that value,
+  // so skipping it gives the same bits.
+  const double shifted = angle_rad + std::numbers::pi;
+  if (shifted >= 0.0 && shifted < two_pi) return shifted - std::numbers::pi;
+  double a = std::fmod(shifted, two_pi);
   if (a < 0.0) a += two_pi;
   return a - std::numbers::pi;
 }
@@ -62,12 +67,35 @@ Polar::Polar(std::string name, const std::vector<double>& alpha_deg, std::vector
     cd2_ = natural_spline_second_derivatives(alpha_, cd_);
     cm2_ = natural_spline_second_derivatives(alpha_, cm_);
   }
+  // Uniform cells no wider than the narrowest table interval, each with the interval holding the
+  // start of the cell before it: a lookup steps forward from there (at most a few rows) instead
+  // of a binary search over the table, and finds the same interval as bracket_index().
+  double narrowest = 2.0 * std::numbers::pi;
+  for (std::size_t i = 0; i + 1 < n; ++i) narrowest = std::min(narrowest, alpha_[i + 1] - alpha_[i]);
+  const int cells = static_cast<int>(std::min(4096.0, std::ceil(2.0 * std::numbers::pi / narrowest)));
+  cells_per_rad_ = cells / (2.0 * std::numbers::pi);
+  interval_of_cell_.resize(cells);
+  for (int c = 0; c < cells; ++c)
+    interval_of_cell_[c] = static_cast<int>(
+        bracket_index(std::span<const double>(alpha_), -std::numbers::pi + (c - 1) / cells_per_rad_));
   separation_ = derive_separation(*this);
+}
+
+std::size_t Polar::interval(double a) const {
+  // The cell of a, clamped (a NaN takes cell 0); the hint is at or below the interval of a (its
+  // cell may come out one too high by rounding: the hint is that of the cell before).
+  const double t = (a + std::numbers::pi) * cells_per_rad_;
+  const int cells = static_cast<int>(interval_of_cell_.size());
+  const int c = t >= 0.0 ? (t < cells ? static_cast<int>(t) : cells - 1) : 0;
+  std::size_t i = static_cast<std::size_t>(interval_of_cell_[c]);
+  const std::size_t last = alpha_.size() - 2;
+  while (i < last && alpha_[i + 1] <= a) ++i;
+  return i;
 }
 
 AirfoilCoefficients Polar::evaluate(double alpha_rad) const {
   const double a = wrap_angle(alpha_rad);
-  const std::size_t i = bracket_index(std::span<const double>(alpha_), a);
+  const std::size_t i = interval(a);
   if (interpolation_ == PolarInterpolation::cubic_spline) {
     return {natural_spline_value(alpha_, cl_, cl2_, i, a), natural_spline_value(alpha_, cd_, cd2_, i, a),
             natural_spline_value(alpha_, cm_, cm2_, i, a)};

@@ -1,12 +1,15 @@
 // Airfoil polar lookup and the NREL 5MW deck as read from inputs/nrel5mw.
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
 #include "fowtsim/aero/polar.hpp"
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/interpolation.hpp"
+#include "fowtsim/core/spline.hpp"
 #include "nrel5mw_deck.hpp"
 
 using namespace fowtsim;
@@ -62,6 +65,60 @@ TEST_CASE("polar interpolation between points and angle wrapping", "[unit][aero]
   }
   CHECK(linear.evaluate(10.0 * kDegree + 4.0 * std::numbers::pi).cl == Approx(0.1).margin(1e-12));
   CHECK(wrap_angle(3.0 * std::numbers::pi / 2.0) == Approx(-std::numbers::pi / 2.0).margin(1e-15));
+}
+
+// Intent: the uniform-cell interval lookup (issue 28) gives the same bits as the binary search it
+// replaced: evaluate() equals bracket_index() + the spline (or chord) on every NREL 5MW airfoil,
+// at every table point, one ulp either side of it, 20,000 angles over ±200° and ±π. Exact (==):
+// the same interval and the same arithmetic.
+TEST_CASE("polar lookup by cells equals the binary search bit for bit", "[unit][aero]") {
+  const Params p = aero::testing::load_nrel5mw_deck();
+  long checked = 0, differing = 0;
+  for (const Polar& polar : p.airfoils) {
+    const std::vector<double>& x = polar.alpha_rad();
+    const std::vector<double> cl2 = natural_spline_second_derivatives(x, polar.cl());
+    const std::vector<double> cd2 = natural_spline_second_derivatives(x, polar.cd());
+    const std::vector<double> cm2 = natural_spline_second_derivatives(x, polar.cm());
+    std::vector<double> angles = {-std::numbers::pi, std::numbers::pi, std::nextafter(std::numbers::pi, 0.0)};
+    for (double a : x) angles.insert(angles.end(), {a, std::nextafter(a, -10.0), std::nextafter(a, 10.0)});
+    for (int k = 0; k <= 20000; ++k) angles.push_back((-200.0 + 400.0 * k / 20000.0) * kDegree);
+    for (double angle : angles) {
+      const double a = wrap_angle(angle);
+      const std::size_t i = bracket_index(std::span<const double>(x), a);
+      AirfoilCoefficients expected;
+      if (polar.interpolation() == PolarInterpolation::cubic_spline) {
+        expected = {natural_spline_value(x, polar.cl(), cl2, i, a), natural_spline_value(x, polar.cd(), cd2, i, a),
+                    natural_spline_value(x, polar.cm(), cm2, i, a)};
+      } else {
+        const double s = (a - x[i]) / (x[i + 1] - x[i]);
+        expected = {lerp(polar.cl()[i], polar.cl()[i + 1], s), lerp(polar.cd()[i], polar.cd()[i + 1], s),
+                    lerp(polar.cm()[i], polar.cm()[i + 1], s)};
+      }
+      const AirfoilCoefficients got = polar.evaluate(angle);
+      if (got.cl != expected.cl || got.cd != expected.cd || got.cm != expected.cm) ++differing;
+      ++checked;
+    }
+  }
+  CHECK(differing == 0);  // exact: same interval, same arithmetic
+  CHECK(checked > 8 * 20000);  // exact count: every airfoil and every angle was visited
+}
+
+// Intent: wrap_angle's shortcut for angles already in [−π, π) gives fmod's bits.
+TEST_CASE("wrap_angle equals the fmod form bit for bit", "[unit][aero]") {
+  const auto by_fmod = [](double angle) {
+    double a = std::fmod(angle + std::numbers::pi, 2.0 * std::numbers::pi);
+    if (a < 0.0) a += 2.0 * std::numbers::pi;
+    return a - std::numbers::pi;
+  };
+  int differing = 0;
+  for (int k = -40000; k <= 40000; ++k) {
+    const double angle = 1e-4 * k + 1e-9 * (k % 7);
+    if (wrap_angle(angle) != by_fmod(angle)) ++differing;
+  }
+  for (double angle : {-std::numbers::pi, std::nextafter(-std::numbers::pi, 0.0), std::nextafter(-std::numbers::pi, -4.0),
+                       std::numbers::pi, std::nextafter(std::numbers::pi, 0.0), 0.0, -0.0, 1e-300})
+    if (wrap_angle(angle) != by_fmod(angle)) ++differing;
+  CHECK(differing == 0);  // exact: fmod of a value in [0, 2π) is that value
 }
 
 // Intent: tables that could break the solver or the lookup are refused before the run.

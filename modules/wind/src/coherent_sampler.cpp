@@ -30,11 +30,20 @@ struct CoherentSampler::Impl {
   int my, mz;                       // embedding sizes
   std::optional<ForwardComplexFft2d> fft;  // My·Mz values, z slow
   std::vector<double> root_lambda;  // sqrt(λ / (My Mz)) of the prepared embedding
-  Eigen::MatrixXcd cholesky;        // L of the prepared dense case (real, kept complex for the product)
+  // |r_j − r_k| and exp(−a |r_j − r_k|) by offset (|Δiy|, |Δiz|), Δiy ≤ My/2, Δiz ≤ Mz/2 (which
+  // covers the grid's offsets, ≤ ny − 1 and nz − 1): one exp per distinct distance, not per pair.
+  int table_ny = 0, table_nz = 0;   // My/2 + 1, Mz/2 + 1
+  std::vector<double> distance_table, coherence_table;  // [Δiz · table_ny + Δiy] [m], [-]
+  // L of the prepared dense case, row-major lower triangle (real: X = L ξ sums the real and
+  // imaginary parts separately, in the same order as the complex product did).
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cholesky;
   Method method = Method::independent;
   double max_dropped = 0.0;
 
   double distance(int diy, int diz) const { return std::hypot(diy * dy, diz * dz); }
+  double coherence(int diy, int diz) const {
+    return coherence_table[static_cast<std::size_t>(std::abs(diz)) * table_ny + std::abs(diy)];
+  }
 };
 
 CoherentSampler::CoherentSampler(int ny, int nz, double dy_m, double dz_m) : impl_(std::make_unique<Impl>()) {
@@ -47,6 +56,13 @@ CoherentSampler::CoherentSampler(int ny, int nz, double dy_m, double dz_m) : imp
   s.mz = fft_friendly(2 * (nz - 1));
   s.fft.emplace(s.mz, s.my);
   s.root_lambda.assign(static_cast<std::size_t>(s.my) * s.mz, 0.0);
+  s.table_ny = s.my / 2 + 1;
+  s.table_nz = s.mz / 2 + 1;
+  s.distance_table.resize(static_cast<std::size_t>(s.table_ny) * s.table_nz);
+  s.coherence_table.resize(s.distance_table.size());
+  for (int diz = 0; diz < s.table_nz; ++diz)
+    for (int diy = 0; diy < s.table_ny; ++diy)
+      s.distance_table[static_cast<std::size_t>(diz) * s.table_ny + diy] = s.distance(diy, diz);
 }
 
 CoherentSampler::~CoherentSampler() = default;
@@ -62,13 +78,15 @@ CoherentSampler::Method CoherentSampler::prepare(double a) {
     s.max_dropped = std::max(s.max_dropped, nearest);
     return s.method = Method::independent;
   }
+  // The same values as exp(−a · distance) pair by pair (hypot is even in each argument).
+  for (std::size_t k = 0; k < s.distance_table.size(); ++k) s.coherence_table[k] = std::exp(-a * s.distance_table[k]);
   // First row of the block-circulant embedding (periodic distances), then its eigenvalues.
   std::complex<double>* buffer = s.fft->data();
   for (int iz = 0; iz < s.mz; ++iz) {
     const int diz = std::min(iz, s.mz - iz);
     for (int iy = 0; iy < s.my; ++iy) {
       const int diy = std::min(iy, s.my - iy);
-      buffer[static_cast<std::size_t>(iz) * s.my + iy] = {std::exp(-a * s.distance(diy, diz)), 0.0};
+      buffer[static_cast<std::size_t>(iz) * s.my + iy] = {s.coherence(diy, diz), 0.0};
     }
   }
   s.fft->execute();
@@ -88,13 +106,13 @@ CoherentSampler::Method CoherentSampler::prepare(double a) {
   Eigen::MatrixXd c(n, n);
   for (int j = 0; j < n; ++j)
     for (int k = 0; k <= j; ++k)
-      c(j, k) = c(k, j) = std::exp(-a * s.distance(j % s.ny - k % s.ny, j / s.ny - k / s.ny));
+      c(j, k) = c(k, j) = s.coherence(j % s.ny - k % s.ny, j / s.ny - k / s.ny);
   Eigen::LLT<Eigen::MatrixXd> llt(c);
   if (llt.info() != Eigen::Success)
     throw NumericalError(ErrorContext{"wind.turbulence", std::nullopt, "coherence matrix",
                                       "check grid spacing and mean wind speed"},
                          "Cholesky factorisation of the u-coherence matrix failed");
-  s.cholesky = llt.matrixL().toDenseMatrix().cast<std::complex<double>>();
+  s.cholesky = llt.matrixL();
   return s.method = Method::dense;
 }
 
@@ -125,9 +143,13 @@ void CoherentSampler::sample(std::span<const std::complex<double>> xi, std::span
     case Method::dense: {
       // X = L ξ, L lower triangular.
       for (std::size_t j = 0; j < n; ++j) {
-        std::complex<double> sum = 0.0;
-        for (std::size_t k = 0; k <= j; ++k) sum += s.cholesky(j, k) * xi[k];
-        out[j] = sum;
+        const double* row = s.cholesky.data() + j * n;
+        double re = 0.0, im = 0.0;
+        for (std::size_t k = 0; k <= j; ++k) {
+          re += row[k] * xi[k].real();
+          im += row[k] * xi[k].imag();
+        }
+        out[j] = {re, im};
       }
       return;
     }

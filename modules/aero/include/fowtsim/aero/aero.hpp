@@ -40,6 +40,8 @@ struct NodeResult {
   double normal_force_N_m = 0.0;   // along x_b, q c c_n (AeroDyn B·N·Fx) [N/m]
   double tangential_force_N_m = 0.0;  // along −y_b (direction of rotation), q c c_t (B·N·Fy) [N/m]
   double theta_rad = 0.0;          // θ = twist + pitch [rad]
+  double cos_theta = 1.0;          // cos θ, sin θ of theta_rad (reused while θ stays the same) [-]
+  double sin_theta = 0.0;
   // Quasi-steady induced velocities a V_x, a' V_y of the BEM solve (after skew): the input of the
   // dynamic-inflow filters [m/s]. With dynamic inflow off they are those of `section`.
   double quasi_steady_axial_induced_m_s = 0.0;

@@ -19,7 +19,9 @@
 //   a = κ/(κ−1)              for φ_c < 0 (propeller-brake region; sin φ_c/(1−a) = sin φ_c (1−κ)).
 // Brackets are tried in Ning's order (0, π/2], [−π/4, 0), (π/2, π); if none changes sign the whole
 // circle is scanned; if there is still no root the section gets zero induction and the status says
-// so (never a silent failure, never NaN). Roots are polished by Brent's method.
+// so (never a silent failure, never NaN). Roots are polished by Brent's method; from a warm start
+// (the previous root at the node) Newton–secant steps come first, the brackets being the fallback
+// that always converges.
 #include "fowtsim/aero/params.hpp"
 #include "fowtsim/aero/polar.hpp"
 
@@ -37,7 +39,7 @@ struct SectionInflow {
 };
 
 enum class InductionStatus {
-  converged,             // Brent converged on a bracketed root of R(φ)
+  converged,             // Newton–secant or Brent converged on a root of R(φ)
   zero_loss_factor,      // node at the hub or tip radius with that loss on: F = 0, momentum gives
                          // no finite induction; a = 1, a' = 0 (AeroDyn's published convention)
   no_axial_flow,         // |V_x| negligible: induction undefined, a = a' = 0
@@ -59,17 +61,26 @@ struct SectionSolution {
   int residual_evaluations = 0;      // calls of R(φ) (cost diagnostic)
   double root_phi_c_rad = std::numeric_limits<double>::quiet_NaN();  // the root of R found (NaN: none);
                                      // the warm start of the next solve at this node
+  double root_slope_per_rad = std::numeric_limits<double>::quiet_NaN();  // dR/dφ_c at the root, secant
+                                     // estimate (NaN: found by bracketing); the next solve's first Newton step [1/rad]
   InductionStatus status = InductionStatus::converged;
 };
 
 // Solves the induction of one section. Allocates nothing; never returns non-finite numbers for
 // finite input (throws NumericalError otherwise). A finite `warm_start` (a previous
-// root_phi_c_rad at this node) is tried first as a narrow bracket ±0.02 rad around it: when R
-// changes sign there, the root in it is taken (the solution continues the branch it was on, as a
-// time-marching solver's would), otherwise the cold search of Ning's brackets runs. Both converge
-// to 1e-12 rad.
+// root_phi_c_rad at this node, with its root_slope_per_rad if known) is followed first by
+// Newton–secant steps (typically 4 residual calls with the final one, against 7.8 for the bracket
+// and Brent before; issue 28), confined to ±0.1 rad around it within its half circle (the solution
+// continues the branch it was on, as a time-marching solver's would). If they leave that window
+// or stall, the narrow bracket ±0.01 rad around the warm start is tried (Brent when R changes
+// sign there), then the cold search of Ning's brackets. Every way converges to 1e-12 rad: the
+// secant stops when its next step would be below Brent's tolerance 2ε|φ| + 0.5e-12.
+// Roots between 0.01 and 0.1 rad from the warm start were, before issue 28, taken by the cold
+// search; on the default deck (60 s, 9,700 of 153,204 solves, moves up to 0.047 rad) that search
+// finds the same root to 6.4e-13 rad.
 SectionSolution solve_section(const SectionInflow& inflow, const Polar& polar, const Params& params,
-                              double warm_start = std::numeric_limits<double>::quiet_NaN());
+                              double warm_start = std::numeric_limits<double>::quiet_NaN(),
+                              double warm_slope = std::numeric_limits<double>::quiet_NaN());
 
 // The section quantities for given inductions (a, a'): φ, α, W, coefficients; the status and loss
 // factor of `base` are kept. Used after the skewed-wake redistribution changes a.

@@ -60,7 +60,13 @@ class Polar {
   PolarInterpolation interpolation_;
   std::vector<double> alpha_, cl_, cd_, cm_;    // table [rad], [-]
   std::vector<double> cl2_, cd2_, cm2_;         // spline second derivatives [1/rad²]; empty if linear
+  double cells_per_rad_ = 0.0;                  // uniform lookup cells over [−π, π) [1/rad]
+  std::vector<int> interval_of_cell_;           // table interval at the start of the cell before
   SeparationData separation_;
+
+  // The table interval i of a ∈ [−π, π) (alpha_[i] <= a < alpha_[i+1], clamped to the first and
+  // last interval), equal to bracket_index(alpha_, a) without its binary search.
+  std::size_t interval(double a) const;
 };
 
 // Wraps an angle into [−π, π).
