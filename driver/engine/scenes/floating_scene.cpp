@@ -224,6 +224,15 @@ ShaftMotion FloatingScene::shaft_at(double t, const multibody::State& body) {
   return shaft_motion(evaluation_.kinematics, evaluation_.acceleration);
 }
 
+void FloatingScene::evaluate_on_copy(double t, const FloatingState& s, const multibody::State& body, FloatingState& work) {
+  work.sea = s.sea;
+  if (work.aero) *work.aero = *s.aero;
+  stage_loads_->act_on(work.held, work.sea, work.aero ? &*work.aero : nullptr, nullptr);
+  multibody::AppliedLoads loads;
+  stage_loads_->loads(t, body, loads);
+  multibody::evaluate(model_, body, loads, t, evaluation_);
+}
+
 Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& s) {
   if (blades_)
     throw InputError({"modes", std::nullopt, "blades", "rigid blades (drop the `blades` section)"},
@@ -232,12 +241,7 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
   const int n = static_cast<int>(dofs.size());
   FloatingState work = s;  // the loads' warm starts and memories change on a copy only
   auto accelerations = [&](const multibody::State& body) {
-    work.sea = s.sea;
-    if (work.aero) *work.aero = *s.aero;
-    stage_loads_->act_on(work.held, work.sea, work.aero ? &*work.aero : nullptr, nullptr);
-    multibody::AppliedLoads loads;
-    stage_loads_->loads(t, body, loads);
-    multibody::evaluate(model_, body, loads, t, evaluation_);
+    evaluate_on_copy(t, s, body, work);
     Eigen::VectorXd a(n);
     for (int i = 0; i < n; ++i) a[i] = evaluation_.acceleration[dofs[static_cast<std::size_t>(i)]];
     return a;
@@ -290,12 +294,7 @@ void FloatingScene::settle_elastic(double t, FloatingState& s) {
   };
   FloatingState work = s;
   auto forces = [&](const multibody::State& body) {
-    work.sea = s.sea;
-    if (work.aero) *work.aero = *s.aero;
-    stage_loads_->act_on(work.held, work.sea, work.aero ? &*work.aero : nullptr, nullptr);
-    multibody::AppliedLoads loads;
-    stage_loads_->loads(t, body, loads);
-    multibody::evaluate(model_, body, loads, t, evaluation_);
+    evaluate_on_copy(t, s, body, work);
     Eigen::VectorXd f(n);
     for (Eigen::Index i = 0; i < n; ++i) f[i] = evaluation_.force[elastic[static_cast<std::size_t>(i)]];
     return f;

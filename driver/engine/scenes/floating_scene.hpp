@@ -109,6 +109,9 @@ class FloatingScene {
  private:
   class StageLoads;
   ShaftMotion shaft_at(double t, const multibody::State& body);
+  // The equations of motion at `body` (into evaluation_) under the stage loads of `work`, a copy of
+  // `s` whose sea and aero data are reset from `s` first (warm starts and memories stay as s has them).
+  void evaluate_on_copy(double t, const FloatingState& s, const multibody::State& body, FloatingState& work);
   RotorDemands demands(const FloatingState& s) const;
   void sample_controller(double t, double dt, FloatingState& s) const;
 

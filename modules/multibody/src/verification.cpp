@@ -69,6 +69,23 @@ Params gyrostat(double rpm) {
   return p;
 }
 
+// Advances `s` by `steps` steps of dt under `provider` and returns the largest drift of the invariants
+// from their start: energy relative to `energy_scale`, the momenta relative to their start.
+Drift drift(const Model& model, LoadProvider& provider, State& s, int steps, double dt, bool gravity, double energy_scale) {
+  const Invariants start = invariants(model, s, gravity);
+  const double e0 = start.kinetic_energy_J + start.potential_energy_J;
+  Drift d;
+  for (int n = 0; n < steps; ++n) {
+    Multibody::advance(model, provider, n * dt, dt, s);
+    const Invariants now = invariants(model, s, gravity);
+    d.energy = std::max(d.energy, std::abs(now.kinetic_energy_J + now.potential_energy_J - e0) / energy_scale);
+    d.angular = std::max(d.angular, (now.angular_momentum_N_m_s - start.angular_momentum_N_m_s).norm() /
+                                        start.angular_momentum_N_m_s.norm());
+    d.linear = std::max(d.linear, (now.linear_momentum_N_s - start.linear_momentum_N_s).norm() / start.linear_momentum_N_s.norm());
+  }
+  return d;
+}
+
 }  // namespace
 
 Drift free_run_drift(double rpm, double revolutions, double dt, const Vec3& angles_deg) {
@@ -84,19 +101,8 @@ Drift free_run_drift(double rpm, double revolutions, double dt, const Vec3& angl
   s.generator_speed_rad_s *= 1.001;  // start with a drivetrain torsion oscillation as well
   FreeSystem provider;
   const Invariants i0 = invariants(model, s, false);
-  const double e0 = i0.kinetic_energy_J + i0.potential_energy_J;
   const double duration = revolutions * 60.0 / std::abs(rpm);
-  const int steps = static_cast<int>(std::ceil(duration / dt));
-  Drift d;
-  for (int n = 0; n < steps; ++n) {
-    Multibody::advance(model, provider, n * dt, dt, s);
-    const Invariants i = invariants(model, s, false);
-    d.energy = std::max(d.energy, std::abs(i.kinetic_energy_J + i.potential_energy_J - e0) / e0);
-    d.angular = std::max(d.angular, (i.angular_momentum_N_m_s - i0.angular_momentum_N_m_s).norm() /
-                                        i0.angular_momentum_N_m_s.norm());
-    d.linear = std::max(d.linear, (i.linear_momentum_N_s - i0.linear_momentum_N_s).norm() / i0.linear_momentum_N_s.norm());
-  }
-  return d;
+  return drift(model, provider, s, static_cast<int>(std::ceil(duration / dt)), dt, false, i0.kinetic_energy_J + i0.potential_energy_J);
 }
 
 Precession gyroscopic_precession(double rpm, double moment) {
@@ -197,18 +203,7 @@ Drift rr_free_run_drift(Params p, double seconds, double dt_s, bool gravity) {
   const Invariants start = invariants(m, s, gravity);
   // The motion's energy: kinetic + strain (+ weight) above the undeflected state at rest.
   const double scale = start.kinetic_energy_J + std::abs(start.potential_energy_J - invariants(m, initial_state(m), gravity).potential_energy_J);
-  const double e0 = start.kinetic_energy_J + start.potential_energy_J;
-  Drift d;
-  const int steps = static_cast<int>(std::lround(seconds / dt_s));
-  for (int i = 0; i < steps; ++i) {
-    Multibody::advance(m, loads, i * dt_s, dt_s, s);
-    const Invariants now = invariants(m, s, gravity);
-    d.energy = std::max(d.energy, std::abs(now.kinetic_energy_J + now.potential_energy_J - e0) / scale);
-    d.angular = std::max(d.angular, (now.angular_momentum_N_m_s - start.angular_momentum_N_m_s).norm() /
-                                        start.angular_momentum_N_m_s.norm());
-    d.linear = std::max(d.linear, (now.linear_momentum_N_s - start.linear_momentum_N_s).norm() / start.linear_momentum_N_s.norm());
-  }
-  return d;
+  return drift(m, loads, s, static_cast<int>(std::lround(seconds / dt_s)), dt_s, gravity, scale);
 }
 
 }  // namespace fowtsim::multibody::verification

@@ -42,6 +42,15 @@ Params oc3_with_rr_blades() {
   return p;
 }
 
+// The value of channel `name` in `out` (FAIL if the model has no such channel).
+double channel_value(const Model& m, const Output& out, const std::string& name) {
+  const auto channels = Multibody::channels(m);
+  for (std::size_t j = 0; j < channels.size(); ++j)
+    if (channels[j].name == name) return out.channels[j];
+  FAIL("no channel " << name);
+  return 0.0;
+}
+
 }  // namespace
 
 TEST_CASE("a Rayleigh-Ritz blade's shape integrals equal Kane's sums over its mass points", "[unit][multibody][rr_blades]") {
@@ -212,13 +221,7 @@ TEST_CASE("Rayleigh-Ritz blade channels: root loads are the blade's on the hub, 
   const Vec3 arm = blade_station_point(m, s, k, 0, tip).position_m - k.blade_root[0].position_m;
   const Vec3 force = d.force_N + loads.blade_station_loads[0][tip].force_N;
   const Vec3 moment = d.moment_N_m + arm.cross(loads.blade_station_loads[0][tip].force_N) + loads.blade_station_loads[0][tip].moment_N_m;
-  const auto channels = Multibody::channels(m);
-  auto at = [&](const std::string& name) {
-    for (std::size_t j = 0; j < channels.size(); ++j)
-      if (channels[j].name == name) return out.channels[j];
-    FAIL("no channel " << name);
-    return 0.0;
-  };
+  auto at = [&](const std::string& name) { return channel_value(m, out, name); };
   const Mat3& t_gc = k.blade_root_orientation[0];
   const Vec3 fc = 1e-3 * t_gc.transpose() * force, mc = 1e-3 * t_gc.transpose() * moment;
   // Same sums in another order: 1e-12 relative to the largest component.
@@ -262,13 +265,7 @@ TEST_CASE("Rayleigh-Ritz blade gauges: the blade beyond, at the root the root lo
     for (int i = 0; i < m.rr_blades.station_count; ++i)
       loads.blade_station_loads[b][i] = {Vec3(2.0e3 + 100.0 * i, -300.0, 20.0 * i), Vec3(0.0, 40.0, 5.0 * i)};
   const Output out = Multibody::outputs(m, loads, s);
-  const auto channels = Multibody::channels(m);
-  auto at = [&](const std::string& name) {
-    for (std::size_t j = 0; j < channels.size(); ++j)
-      if (channels[j].name == name) return out.channels[j];
-    FAIL("no channel " << name);
-    return 0.0;
-  };
+  auto at = [&](const std::string& name) { return channel_value(m, out, name); };
   for (const char* axis : {"x", "y", "z"}) {
     // Both from the same integrals and loads in another order: round-off.
     CHECK(at(std::string("Spn1FL") + axis + "b1") == Approx(at(std::string("RootF") + axis + "b1")).epsilon(1e-12).margin(1e-9));
