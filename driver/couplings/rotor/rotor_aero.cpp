@@ -43,6 +43,8 @@ RotorAero::RotorAero(aero::Params params, const wind::WindParams& wind, const mu
   aero_channel_count_ = aero::Aero::channels(params_).size();
   const std::vector<aero::BladeNodeParams>& nodes = params_.blade;
   span_weight_m_.assign(nodes.size(), 0.0);
+  for (const aero::BladeNodeParams& node : nodes)
+    airfoil_in_blade_.push_back(rotation_y(node.curve_angle_rad) * rotation_z(-node.twist_rad));
   for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
     const double half = 0.5 * (nodes[k + 1].span_m - nodes[k].span_m);
     span_weight_m_[k] += half;
@@ -138,6 +140,7 @@ void RotorAero::evaluate_rayleigh_ritz(double t, const multibody::Model& model, 
     const Mat3& t_gf = chain.blade_frame_orientation[b];
     const double pitch = state.blade_pitch_rad[b];
     in.blade_pitch_rad[b] = pitch;
+    const Mat3 pitched = rotation_z(-pitch);  // about the span axis, so it commutes with the twist
     for (int k = 0; k < nn; ++k) {
       const aero::BladeNodeParams& node = params_.blade[static_cast<std::size_t>(k)];
       const auto c = static_cast<Eigen::Index>(b * nn + k);
@@ -147,8 +150,7 @@ void RotorAero::evaluate_rayleigh_ritz(double t, const multibody::Model& model, 
       const Vec3 offset = turn * (t_gc * Vec3(node.curve_ac_m, node.sweep_ac_m, 0.0));  // aerodynamic centre from the pitch axis
       in.node_position_m.col(c) = p.position_m + offset;
       d.arms[static_cast<std::size_t>(c)] = offset;
-      in.node_orientation[static_cast<std::size_t>(c)] =
-          turn * t_gc * rotation_y(node.curve_angle_rad) * rotation_z(-(node.twist_rad + pitch));
+      in.node_orientation[static_cast<std::size_t>(c)] = turn * t_gc * airfoil_in_blade_[static_cast<std::size_t>(k)] * pitched;
       in.node_velocity_m_s.col(c) = p.velocity_m_s + omega.cross(offset);
       // As the rigid rotor: the platform's and nacelle's rotation about the span axis (unsteady airfoils).
       in.node_pitch_rate_rad_s(c) = chain.shaft.angular_velocity_rad_s.dot(in.node_orientation[static_cast<std::size_t>(c)].col(2));

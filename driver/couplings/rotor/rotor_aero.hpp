@@ -115,6 +115,7 @@ class RotorAero {
   std::shared_ptr<const wind::WindField> wind_;  // null only for a turbulent wind set up for a check
   aero::RigidRotor hub_frame_rotor_;  // the rotor placed at the origin with h = identity
   std::vector<double> span_weight_m_;  // trapezoid weight of each blade node along the span [m]
+  std::vector<Mat3> airfoil_in_blade_;  // each node's airfoil frame in the unpitched blade frame, R_y(curve) R_z(−twist)
   std::size_t aero_channel_count_ = 0;
 };
 
