@@ -398,7 +398,7 @@ RayleighRitzBlades make_rr_blades(const RotorParams& r) {
     for (std::size_t k = 0; k < spans.size(); ++k) {
       const auto i = static_cast<Eigen::Index>(k);
       list[k] = {spans[k], shape_at(sampled_at, i, sampled_at.u_flap, sampled_at.u_edge),
-                 shape_at(sampled_at, i, sampled_at.nu_flap, sampled_at.nu_edge)};
+                 shape_at(sampled_at, i, sampled_at.nu_flap, sampled_at.nu_edge), sampled_at.points[k].twist};
     }
     return list;
   };

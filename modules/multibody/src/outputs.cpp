@@ -209,7 +209,8 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
     c[n++] = tip_c.y();  // IPDefl
     // Gauges (ElastoDyn's Spn{k}FL/ML{x,y,z}b): the load of the blade beyond the gauge on the part
     // inboard — the d'Alembert load of the mass beyond it and the station loads beyond it — about the
-    // deflected gauge point, in the local (deflected) section frame there.
+    // deflected gauge point, in the local section frame there: ElastoDyn's element-fixed frame n,
+    // aligned with the structural axes (b turned by the structural twist θ_s) and the elastic slopes.
     const FlexibleBodyMotion body = blade_motion(model, state, k, b);
     const Vec3& root = k.blade_root[b].position_m;
     for (int g = 0; g < rr.gauge_count; ++g) {
@@ -226,7 +227,7 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
       moment += (root - point).cross(force);
       Vec3 theta = Vec3::Zero();
       for (int j = 0; j < rr.mode_count; ++j) theta += state.blade_deflection_m[b][j] * blade_rotation_shape(gauge.station, j);
-      const Mat3 local = t_gf * rotation_x(theta.x()) * rotation_y(theta.y());
+      const Mat3 local = t_gf * rotation_x(theta.x()) * rotation_y(theta.y()) * rotation_z(-gauge.station.twist_rad);
       put3(local.transpose() * force, 1e-3);   // Spn{k}FL{x,y,z}b (kN)
       put3(local.transpose() * moment, 1e-3);  // Spn{k}ML{x,y,z}b (kN·m)
     }
@@ -334,11 +335,11 @@ std::vector<ChannelInfo> Multibody::channels(const Model& model) {
         for (int i = 0; i < 3; ++i)
           c.push_back({"Spn" + gauge + "FL" + axes[i] + "b" + blade, "kN",
                        "blade " + blade + " local force at gauge " + gauge + " (" + x.str() + " m from the root; the blade beyond "
-                       "on the part inboard) along " + axes[i] + " of the local deflected section frame", m});
+                       "on the part inboard) along " + axes[i] + " of the local section frame (structural twist and deflection)", m});
         for (int i = 0; i < 3; ++i)
           c.push_back({"Spn" + gauge + "ML" + axes[i] + "b" + blade, "kN-m",
                        "blade " + blade + " local moment at gauge " + gauge + " (" + x.str() + " m from the root; about the "
-                       "deflected gauge point) about " + axes[i] + " of the local deflected section frame", m});
+                       "deflected gauge point) about " + axes[i] + " of the local section frame (structural twist and deflection)", m});
       }
     }
   }

@@ -122,6 +122,7 @@ struct BladeStation {
   double span_m = 0.0;                                    // x from the root along the pitch axis [m]
   std::array<Vec3, kMaxBodyModes> shape{};                // φ_j(x) in f [-]
   std::array<Vec3, kMaxBodyModes> slope{};                // φ_j'(x) in f [1/m]
+  double twist_rad = 0.0;                                 // structural twist θ_s(x), + like pitch (ElastoDyn's StrcTwst) [rad]
 };
 // A Rayleigh–Ritz blade gauge: its station and the blade mass outboard of it as shape integrals
 // (in the blade's frame, from the root), so flexible_body_dalembert() gives its d'Alembert load.
