@@ -109,3 +109,19 @@ TEST_CASE("a negative beam mass per length names the deck key of its station", "
              Catch::Contains("deck.yaml:31:") && Catch::Contains("beam.stations[1].mass: mass per length must be ≥ 0"));
   CHECK(nothing_written(dir));
 }
+
+TEST_CASE("Rayleigh-Ritz blade decks: a missing blade file, a second blade model or a tip radius that disagrees stop at the deck", "[unit][run]") {
+  const auto dir = testing::scratch_dir("input_checks_rr");
+  std::string message = input_error_of(deck_over(dir, "nrel5mw/onshore_startup_rr.yaml", "structure: {rotor: {rayleigh_ritz_blade_file: nope.yaml}}\n"), dir);
+  CHECK_THAT(message, Catch::Contains("deck.yaml:2:") && Catch::Contains("rayleigh_ritz_blade_file") && Catch::Contains("does not exist"));
+  CHECK(nothing_written(dir));
+  message = input_error_of(deck_over(dir, "oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml",
+                                     "structure: {rotor: {rayleigh_ritz_blade_file: " +
+                                         (testing::source_dir() / "inputs/nrel5mw/blade_elastodyn.yaml").string() + "}}\n"),
+                           dir);
+  CHECK_THAT(message, Catch::Contains("deck.yaml:2:") && Catch::Contains("one blade model"));
+  CHECK(nothing_written(dir));
+  message = input_error_of(deck_over(dir, "nrel5mw/onshore_startup_rr.yaml", "structure: {rotor: {tip_radius_m: 62.0}}\n"), dir);
+  CHECK_THAT(message, Catch::Contains("rayleigh_ritz_blade.tip_radius_m") && Catch::Contains("62"));
+  CHECK(nothing_written(dir));
+}

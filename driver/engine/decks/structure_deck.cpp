@@ -110,8 +110,9 @@ const DeckSection<multibody::Params>& structure_section() {
                 Schema::string().optional().doc("FlapDOF1/2, EdgeDOF: Rayleigh-Ritz blades from an ElastoDyn blade deck (e.g. "
                                                 "inputs/nrel5mw/blade_elastodyn.yaml), relative to this deck file; absent = rigid"),
                 [](const io::ValidatedDeck& d, const std::string& key, RotorParams& r) {
+                  const std::filesystem::path file = file_beside_deck(d, key);  // names the deck line itself
                   try {
-                    r.rayleigh_ritz_blade = flexbody::read_elastodyn_blade(file_beside_deck(d, key));
+                    r.rayleigh_ritz_blade = flexbody::read_elastodyn_blade(file);
                   } catch (const InputError& e) {
                     throw InputError(e.context(), where(d, key) + ": " + e.message());
                   }

@@ -209,7 +209,9 @@ void validate(const Params& p) {
     e.add("structure.rotor.rayleigh_ritz_blade_gauges: needs structure.rotor.rayleigh_ritz_blade_file (Rayleigh-Ritz blades)");
   if (r.rayleigh_ritz_blade) {
     const flexbody::ElastoDynBlade& b = *r.rayleigh_ritz_blade;
-    e.require(!r.flexible_blades, "rotor.rayleigh_ritz_blade", 1.0, "not with flexible_blades (one blade model)");
+    if (r.flexible_blades)
+      e.add("structure.rotor.rayleigh_ritz_blade_file: Rayleigh-Ritz blades and flexible (MBBT) blades — the `blades` section — "
+            "together; expected one blade model");
     e.require(std::abs(b.hub_radius - r.hub_radius_m) <= 1e-9 * r.tip_radius_m, "rotor.rayleigh_ritz_blade.hub_radius_m",
               b.hub_radius, "= rotor.hub_radius_m (" + std::to_string(r.hub_radius_m) + ")");
     e.require(std::abs(b.tip_radius - r.tip_radius_m) <= 1e-9 * r.tip_radius_m, "rotor.rayleigh_ritz_blade.tip_radius_m",
@@ -226,7 +228,8 @@ void validate(const Params& p) {
     for (std::size_t i = 0; i < r.blade_station_spans_m.size(); ++i) {
       const double x = r.blade_station_spans_m[i];
       e.require(x >= 0.0 && x <= length && (i == 0 || x >= r.blade_station_spans_m[i - 1]),
-                "rotor.blade_station_spans_m[" + std::to_string(i) + "]", x, "ascending within 0 … the blade length");
+                "rotor.blade_station_spans_m[" + std::to_string(i) + "] (the aero node spans)", x,
+                "ascending within 0 … the blade length " + std::to_string(length));
     }
   }
   // Drivetrain
