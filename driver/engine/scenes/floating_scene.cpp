@@ -65,15 +65,24 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
     if (blades_ || rotor_) multibody::chain_kinematics(model_, s, chain_);
     if (blades_) {  // flexible blades: their held root loads, aerodynamics included
       blades_->add_stage_loads(chain_, *blades_data_, out);
-    } else if (rotor_ && model_.rr_blades.mode_count > 0) {  // Rayleigh–Ritz blades: loads at their stations
-      rotor_->evaluate_rayleigh_ritz(t, model_, s, chain_, *aero_data_, &out);
     } else if (rotor_) {
-      rotor_->evaluate(t, chain_, s.rotor_speed_rad_s, held_->pitch_rad, *aero_data_);
-      out.rotor_force_N = aero_data_->force_N;
-      out.rotor_moment_N_m = aero_data_->moment_N_m;
+      // aero.induction: step — solved at the large step's start, held over its later stages.
+      const bool held = rotor_->params().induction_held_over_step && step_start_ && t != *step_start_;
+      const aero::Induction induction = held ? aero::Induction::held : aero::Induction::solve;
+      if (model_.rr_blades.mode_count > 0) {  // Rayleigh–Ritz blades: loads at their stations
+        rotor_->evaluate_rayleigh_ritz(t, model_, s, chain_, *aero_data_, &out, induction);
+      } else {
+        rotor_->evaluate(t, chain_, s.rotor_speed_rad_s, held_->pitch_rad, *aero_data_, induction);
+        out.rotor_force_N = aero_data_->force_N;
+        out.rotor_moment_N_m = aero_data_->moment_N_m;
+      }
     }
     if (rotor_ && rotor_->tower_drag_on()) rotor_->tower_drag(t, model_, s, chain_, tower_, out);
   }
+  // The large step the next stages belong to (its start time), and its end: outside a step (rows,
+  // linearisation) every evaluation solves its inductions.
+  void begin_step(double t) { step_start_ = t; }
+  void end_step() { step_start_.reset(); }
   multibody::SpinMotion rotor_spin(double t) override {
     return blades_ ? blades_->spin(t, *blades_data_) : multibody::SpinMotion{};
   }
@@ -87,6 +96,7 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
   SeaModules::Data* sea_data_ = nullptr;
   RotorAero::Data* aero_data_ = nullptr;
   const TurbineBlades::Data* blades_data_ = nullptr;
+  std::optional<double> step_start_;  // set while a large step's stages run (begin_step)
   multibody::ChainKinematics chain_;  // workspace
   RotorAero::TowerWorkspace tower_;    // workspace
 };
@@ -384,7 +394,9 @@ void FloatingScene::step(double t, double dt, FloatingState& s) {
   RotorAero::Data* aero = s.aero ? &*s.aero : nullptr;
   stage_loads_->act_on(s.held, s.sea, aero, s.blades ? &*s.blades : nullptr);
   if (!blades_) {
+    stage_loads_->begin_step(t);
     multibody::Multibody::advance(model_, *stage_loads_, t, dt, s.body);
+    stage_loads_->end_step();
     if (rotor_) rotor_->advance_states(model_, s.body, t + dt, *aero);  // UA/DBEMT, if on
   } else {
     blades_->advance(*stage_loads_, [this](double tt, const multibody::State& b) { return shaft_at(tt, b); }, demands(s), t,

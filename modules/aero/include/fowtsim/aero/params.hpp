@@ -82,6 +82,11 @@ struct Params {
   double ua_separation_time_constant = 6.0;  // τ_f in units of c/(2W) (HGM; AeroDyn T_f0 = 3) (> 0)
   double ua_cutout_rad = 45.0 * std::numbers::pi / 180.0;  // static polar beyond |α| (UACutout) (5°…90°)
   DynamicInflowModel dynamic_inflow = DynamicInflowModel::none;
+  // The caller's schedule of the quasi-steady induction solve (this module solves when asked):
+  // false = at every evaluation; true = a floating scene with rigid or Rayleigh–Ritz blades solves
+  // it at a large step's start and holds it over the step's RK4 stages (Aero::Induction::held), as
+  // the MBBT coupling holds it over its small steps.
+  bool induction_held_over_step = false;
 
   TowerPotential tower_potential = TowerPotential::none;
   TowerShadow tower_shadow = TowerShadow::none;
