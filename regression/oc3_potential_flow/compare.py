@@ -18,6 +18,24 @@ BANDS = [(0.08, 0.10), (0.10, 0.12), (0.12, 0.15), (0.15, 0.20)]  # Hz: where th
 T0 = 100.0
 
 
+class Checks:
+    """PASS/FAIL lines of a regression script; finish() exits 1 if any failed."""
+
+    def __init__(self):
+        self.failures = []
+
+    def __call__(self, ok, what):
+        print(("PASS  " if ok else "FAIL  ") + what)
+        if not ok:
+            self.failures.append(what)
+
+    def finish(self):
+        if self.failures:
+            print(f"{len(self.failures)} check(s) failed")
+            sys.exit(1)
+        print("all checks passed")
+
+
 def read_out(path):
     lines = open(path).read().splitlines()
     start = next(i for i, l in enumerate(lines) if l.split()[:1] == ["Time"])
@@ -87,13 +105,7 @@ def main():
                   + " | ".join(f"{rao[ref_name, lo][1][case]:.4g} ({100 * (rao[ref_name, lo][1][case] / r - 1):+.1f} %)"
                                for case, _ in CASES) + " |")
 
-    failures = []
-
-    def check(ok, what):
-        print(("PASS  " if ok else "FAIL  ") + what)
-        if not ok:
-            failures.append(what)
-
+    check = Checks()
     print()
     # Heave RAO: potential flow reproduces OpenFAST's (measured within 0.4–2.2 % per band); Morison
     # with Ca = 1 is 13–19 % high. Band means of 10-segment cross-spectral estimates scatter by a few
@@ -138,10 +150,7 @@ def main():
     for name, bound in (("B1RdtFxi", 0.05), ("HydroFxi", 0.10)):
         _, std, _, _, ref_std = stats[tower, name]
         check(abs(std / ref_std - 1) < bound, f"{tower}: {name} std within {bound:.0%} ({std:.4g} vs {ref_std:.4g})")
-    if failures:
-        print(f"{len(failures)} check(s) failed")
-        sys.exit(1)
-    print("all checks passed")
+    check.finish()
 
 
 if __name__ == "__main__":

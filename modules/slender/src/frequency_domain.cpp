@@ -17,18 +17,29 @@ namespace {
 using std::numbers::pi;
 using namespace std::complex_literals;
 
-void check_converged(const FrequencyDomainOptions& options, double change) {
+// The iterative drag linearisation both solutions share: from the first guess γ, set the drag
+// damping c = drag_factor · γ, let `solve` respond to it and return the next γ, until γ changes by
+// less than the tolerance (relative to its largest value; 0 change when there is no drag).
+// Returns the iterations used; NumericalError if it does not converge.
+template <class Solve>
+int iterate_drag_linearisation(const StripTable& s, VecX gamma, VecX& drag_damping, const FrequencyDomainOptions& options,
+                               Solve solve) {
+  double change = 1.0;
+  int iterations = 0;
+  while (iterations < options.max_iterations && change > options.tolerance) {
+    ++iterations;
+    drag_damping = s.drag_factor_kg_m2.cwiseProduct(gamma);
+    const VecX next = solve();
+    const double scale = next.cwiseAbs().maxCoeff();
+    change = scale > 0.0 ? (next - gamma).cwiseAbs().maxCoeff() / scale : 0.0;
+    gamma = next;
+  }
   if (change > options.tolerance)
     throw NumericalError({"slender.frequency_domain", std::nullopt, "drag linearisation γ",
                           "raise max_iterations or check the drag coefficients"},
                          "γ did not converge in " + std::to_string(options.max_iterations) + " iterations (relative change " +
                              std::to_string(change) + ")");
-}
-
-// Relative change of γ between iterations, against the largest γ (0 when there is no drag).
-double relative_change(const VecX& next, const VecX& previous) {
-  const double scale = next.cwiseAbs().maxCoeff();
-  return scale > 0.0 ? (next - previous).cwiseAbs().maxCoeff() / scale : 0.0;
+  return iterations;
 }
 
 // Linearised Morison load per length of the flow velocity `flow` (complex amplitude) at ω: the
@@ -67,22 +78,16 @@ HarmonicResponse solve_harmonic(const Model& model, const Modes& modes, double o
   const StripTable& s = model.strips;
   const double harmonic_factor = 8.0 / (3.0 * pi);
   const VecXc flow = amplitude * U;  // u per strip
-  VecX gamma = harmonic_factor * flow.cwiseAbs();  // first guess: the body at rest
   HarmonicResponse r{omega, amplitude, {}, {}, {}, {}, 0};
-  double change = 1.0;
-  for (r.iterations = 1; r.iterations <= options.max_iterations && change > options.tolerance; ++r.iterations) {
-    r.drag_damping_N_s_m2 = s.drag_factor_kg_m2.cwiseProduct(gamma);
+  // First guess: the body at rest.
+  r.iterations = iterate_drag_linearisation(s, harmonic_factor * flow.cwiseAbs(), r.drag_damping_N_s_m2, options, [&] {
     // Wave force on strip i: inertia ρCmA u̇ (slide "Wave Force - Morison's Equation") plus the drag
     // on the flow velocity; the −c v̇ part sits in the damping matrix.
     r.excitation_N_m = morison_excitation(s, r.drag_damping_N_s_m2, omega, flow);
     r.q = solve_generalised(model, modes, omega, r.excitation_N_m, r.drag_damping_N_s_m2, options.recovery);
     r.relative_velocity_m_s = flow - (1i * omega) * (model.phi * r.q);
-    const VecX next = harmonic_factor * r.relative_velocity_m_s.cwiseAbs();
-    change = relative_change(next, gamma);
-    gamma = next;
-  }
-  --r.iterations;
-  check_converged(options, change);
+    return VecX(harmonic_factor * r.relative_velocity_m_s.cwiseAbs());
+  });
   return r;
 }
 
@@ -111,10 +116,7 @@ RandomResponse solve_random(const Model& model, const Modes& modes, const VecX& 
     return VecX((transfer.cwiseAbs2() * (spectrum * delta_omega)).cwiseSqrt());
   };
   RandomResponse r{omegas, delta_omega, spectrum, MatXc(model.mass.rows(), Nf), MatXc(N, Nf), sigma_of(U), {}, 0};
-  VecX gamma = random_factor * r.sigma_relative_velocity_m_s;
-  double change = 1.0;
-  for (r.iterations = 1; r.iterations <= options.max_iterations && change > options.tolerance; ++r.iterations) {
-    r.drag_damping_N_s_m2 = s.drag_factor_kg_m2.cwiseProduct(gamma);
+  r.iterations = iterate_drag_linearisation(s, random_factor * r.sigma_relative_velocity_m_s, r.drag_damping_N_s_m2, options, [&] {
     for (Eigen::Index j = 0; j < Nf; ++j) {
       const double w = omegas(j);
       const VecXc force = morison_excitation(s, r.drag_damping_N_s_m2, w, U.col(j));
@@ -122,12 +124,8 @@ RandomResponse solve_random(const Model& model, const Modes& modes, const VecX& 
       r.relative_velocity_transfer.col(j) = U.col(j) - (1i * w) * (model.phi * r.q_transfer.col(j));
     }
     r.sigma_relative_velocity_m_s = sigma_of(r.relative_velocity_transfer);
-    const VecX next = random_factor * r.sigma_relative_velocity_m_s;
-    change = relative_change(next, gamma);
-    gamma = next;
-  }
-  --r.iterations;
-  check_converged(options, change);
+    return VecX(random_factor * r.sigma_relative_velocity_m_s);
+  });
   return r;
 }
 
