@@ -117,7 +117,7 @@ const DeckSection<multibody::Params>& structure_section() {
                     throw InputError(e.context(), where(d, key) + ": " + e.message());
                   }
                 })
-        .key("rayleigh_ritz_blade_nodes", Schema::integer().at_least(1).default_value(17).doc("BldNodes: the Rayleigh-Ritz blades' "
+        .key("rayleigh_ritz_blade_nodes", Schema::integer().at_least(1).at_most(1000).default_value(17).doc("BldNodes: the Rayleigh-Ritz blades' "
                                                                                                "integration nodes (ElastoDyn's midpoint rule)"),
              &RotorParams::rayleigh_ritz_blade_nodes)
         .key("rayleigh_ritz_blade_gauges", Schema::sequence(Schema::number().at_least(0.0).less_than(1.0)).max_items(9).optional()
