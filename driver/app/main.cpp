@@ -259,6 +259,9 @@ int main(int argc, char** argv) {
   sweep->add_option("--output-dir", sweep_output_dir, "output folder (default: the spec's sweep.output_dir, or runs/sweeps/<name>)");
   sweep->add_option("--partition", sweep_request.slurm.partition, "Slurm partition (--slurm)");
   sweep->add_option("--time", sweep_request.slurm.time_limit, "Slurm time limit per array task, e.g. 02:00:00 (--slurm)");
+  sweep->add_option("--account", sweep_request.slurm.account, "Slurm account charged for the job (--slurm; over the spec's slurm.account)");
+  sweep->add_option("--qos", sweep_request.slurm.qos, "Slurm quality of service (--slurm; over the spec's slurm.qos)");
+  sweep->add_option("--mem", sweep_request.slurm.memory, "memory per array task, e.g. 2G (--slurm; over the spec's slurm.mem)");
   sweep->add_option("--cases-per-task", sweep_request.slurm.cases_per_task,
                     "cases run one after the other in each array task, for short cases (--slurm; default 1)")
       ->check(positive("a positive whole number"));

@@ -174,6 +174,9 @@ TEST_CASE("Slurm sweep: a job array on a single-node Slurm gives the local sweep
   INFO(slurm.logs());
   REQUIRE(slurm.wait_for_job(job[1].str(), 300s));
 
+  // The spec's set-up line ran in every array task (7 tasks of 2 cases), before its cases.
+  CHECK_THAT(read_text(dir / "slurm/slurm/sweep.sbatch"), Catch::Contains("#SBATCH --comment=fowtsim-test"));
+  for (int task = 0; task < 7; ++task) CHECK(std::filesystem::exists(dir / fmt::format("slurm/logs/setup-{}", task)));
   CHECK(run_fowtsim("sweep " + slurm_sweep + " --collect", dir / "collect.log") == 1);  // the blowup case fails there too
   CHECK_THAT(read_text(dir / "collect.log"), Catch::Contains("12 completed of 13"));
   // Every number of every case, the failure's exit code and reason included.

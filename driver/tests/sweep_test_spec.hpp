@@ -34,6 +34,9 @@ load_cases:
     set: {wind.turbulence.ny: [7], wind.turbulence.nz: [7]}
   - name: blowup
     set: {structure.drivetrain.generator_inertia_kg_m2: [0.01], wind.turbulence.ny: [7], wind.turbulence.nz: [7]}
+slurm:                       # --slurm only; a local sweep ignores it
+  sbatch_lines: [--comment=fowtsim-test]
+  setup_lines: ['touch "$root/logs/setup-$SLURM_ARRAY_TASK_ID"']
 load_table:
   channels: [GenPwr, RotSpeed, PtfmPitch, TwrBsMyt]
   fatigue:

@@ -189,7 +189,7 @@ int run_slurm(std::FILE* out, const SweepRequest& request, const SweepSpec& spec
              names.size());
   if (names.empty()) return finish_with_table(out, spec, cases, hashes, layout);
   const SlurmJob job = write_slurm_job(spec.name, layout, names, request.executable.empty() ? own_executable() : request.executable,
-                                       request.slurm);
+                                       merge_slurm_options(spec.slurm, request.slurm));
   std::string command;
   for (const std::string& word : sbatch_command(job)) command += (command.empty() ? "" : " ") + word;
   fmt::print(out, "  job array        {} tasks of {} case(s): {}\n", job.tasks, std::max(1, request.slurm.cases_per_task), job.script.string());

@@ -24,6 +24,21 @@ std::string shell_quote(const std::string& text) {
 
 }  // namespace
 
+SlurmOptions merge_slurm_options(const SlurmOptions& spec, const SlurmOptions& command_line) {
+  SlurmOptions merged = command_line;
+  auto fill = [](std::string& value, const std::string& from_spec) {
+    if (value.empty()) value = from_spec;
+  };
+  fill(merged.partition, spec.partition);
+  fill(merged.time_limit, spec.time_limit);
+  fill(merged.account, spec.account);
+  fill(merged.qos, spec.qos);
+  fill(merged.memory, spec.memory);
+  merged.sbatch_lines.insert(merged.sbatch_lines.begin(), spec.sbatch_lines.begin(), spec.sbatch_lines.end());
+  merged.setup_lines.insert(merged.setup_lines.begin(), spec.setup_lines.begin(), spec.setup_lines.end());
+  return merged;
+}
+
 SlurmJob write_slurm_job(const std::string& sweep_name, const SweepLayout& layout, const std::vector<std::string>& case_names,
                          const fs::path& executable, const SlurmOptions& options) {
   SlurmJob job;
@@ -48,9 +63,17 @@ SlurmJob write_slurm_job(const std::string& sweep_name, const SweepLayout& layou
   s += fmt::format("#SBATCH --output={}\n", (dir / "slurm-%A_%a.log").string());
   if (!options.partition.empty()) s += fmt::format("#SBATCH --partition={}\n", options.partition);
   if (!options.time_limit.empty()) s += fmt::format("#SBATCH --time={}\n", options.time_limit);
+  if (!options.account.empty()) s += fmt::format("#SBATCH --account={}\n", options.account);
+  if (!options.qos.empty()) s += fmt::format("#SBATCH --qos={}\n", options.qos);
+  if (!options.memory.empty()) s += fmt::format("#SBATCH --mem={}\n", options.memory);
+  for (const std::string& line : options.sbatch_lines) s += fmt::format("#SBATCH {}\n", line);
   s += "set -u\n";
   s += fmt::format("root={}\nfowtsim={}\nper_task={}\n", shell_quote(root.string()), shell_quote(executable.string()), per_task);
   s += fmt::format("mapfile -t cases < {}\n", shell_quote(job.case_list.string()));
+  // Set-up lines (modules, environment; they may use $root) run in the task's shell before any
+  // case: a failing one is reported in the task's log and the cases still run, so that their own
+  // logs say what went wrong.
+  for (const std::string& line : options.setup_lines) s += line + "\n";
   s += "first=$((SLURM_ARRAY_TASK_ID * per_task))\n"
        "for ((i = first; i < first + per_task && i < ${#cases[@]}; i++)); do\n"
        "  case_name=${cases[i]}\n"

@@ -9,21 +9,19 @@
 #include <vector>
 
 #include "sweep/case_files.hpp"
+#include "sweep/slurm_options.hpp"
 
 namespace fowtsim::driver::sweep {
 
-struct SlurmOptions {
-  std::string partition;            // --partition; "" = the cluster's default
-  std::string time_limit;           // --time per task (Slurm's format, e.g. 01:00:00); "" = default
-  int cases_per_task = 1;           // cases run one after the other in each array task
-  std::optional<int> max_running;   // the %M of --array=0-N%M: tasks running at once
-};
 
 struct SlurmJob {
   std::filesystem::path script;     // slurm/sweep.sbatch
   std::filesystem::path case_list;  // slurm/cases.txt: one case name per line, task i runs lines i·P … i·P + P − 1
   int tasks = 0;                    // array size
 };
+
+// The spec's `slurm:` options with the command line's over them (a command-line value wins).
+SlurmOptions merge_slurm_options(const SlurmOptions& spec, const SlurmOptions& command_line);
 
 // Writes the script and the case list for `case_names` (the cases still to run).
 SlurmJob write_slurm_job(const std::string& sweep_name, const SweepLayout& layout, const std::vector<std::string>& case_names,

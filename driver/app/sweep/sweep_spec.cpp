@@ -72,8 +72,20 @@ Schema sweep_spec_schema() {
       {"bin_width_m_s", Schema::number().unit("m_s").greater_than(0.0).optional()
                             .doc("wind-speed bin of each fatigue speed; absent = their smallest spacing (2 with one speed)")},
   });
+  const Schema slurm = Schema::map({
+      {"partition", Schema::string().optional().doc("--partition (the command line's --partition wins)")},
+      {"time", Schema::string().optional().doc("--time per array task, Slurm's format, e.g. 02:00:00 (--time wins)")},
+      {"account", Schema::string().optional().doc("--account charged for the job (--account wins)")},
+      {"qos", Schema::string().optional().doc("--qos (--qos wins)")},
+      {"mem", Schema::string().optional().doc("--mem per array task, e.g. 2G (--mem wins)")},
+      {"sbatch_lines", Schema::sequence(Schema::string()).optional()
+                           .doc("more sbatch options, each written as '#SBATCH <line>', e.g. --constraint=avx2")},
+      {"setup_lines", Schema::sequence(Schema::string()).optional()
+                          .doc("shell lines each array task runs before its cases: module load …, export …")},
+  });
   return Schema::map({
       {"sweep", sweep.doc("what is swept and where it goes")},
+      {"slurm", slurm.optional().doc("how --slurm submits the job array (cluster account, QOS, memory, set-up)")},
       {"turbine", turbine.optional().doc("IEC classes of the turbine (presets, wind distribution); absent = I B, 90 m")},
       {"load_cases", Schema::sequence(group).min_items(1).doc("load-case groups, expanded in order")},
       {"load_table", load_table.optional().doc("statistics and DELs of the load table")},
@@ -234,6 +246,32 @@ LoadTableSpec read_load_table(const io::ValidatedDeck& root) {
   return t;
 }
 
+SlurmOptions read_slurm_options(const io::ValidatedDeck& root, Issues& issues) {
+  SlurmOptions o;
+  if (!root.has("slurm")) return o;
+  const io::ValidatedDeck d = root.section("slurm");
+  auto text = [&](const char* key) { return d.has(key) ? d.string(key) : std::string(); };
+  o.partition = text("partition");
+  o.time_limit = text("time");
+  o.account = text("account");
+  o.qos = text("qos");
+  o.memory = text("mem");
+  if (d.has("sbatch_lines")) o.sbatch_lines = d.strings("sbatch_lines");
+  if (d.has("setup_lines")) o.setup_lines = d.strings("setup_lines");
+  // One line each: a line break would end the #SBATCH block or split a shell command unseen.
+  for (const char* key : {"partition", "time", "account", "qos", "mem"})
+    if (text(key).find_first_of("\n\r") != std::string::npos) issues.add(d, key, "a line break", "a value on one line");
+  for (std::size_t i = 0; i < o.sbatch_lines.size(); ++i) {
+    const std::string& line = o.sbatch_lines[i];
+    if (line.empty() || line.front() != '-' || line.find_first_of("\n\r") != std::string::npos)
+      issues.add(d, fmt::format("sbatch_lines[{}]", i), line, "one sbatch option on one line, starting with - (e.g. --constraint=avx2)");
+  }
+  for (std::size_t i = 0; i < o.setup_lines.size(); ++i)
+    if (o.setup_lines[i].find_first_of("\n\r") != std::string::npos)
+      issues.add(d, fmt::format("setup_lines[{}]", i), "a line break", "one shell line per item");
+  return o;
+}
+
 }  // namespace
 
 SweepSpec read_sweep_spec(const std::filesystem::path& spec_path) {
@@ -274,6 +312,7 @@ SweepSpec read_sweep_spec(const std::filesystem::path& spec_path) {
       issues.add(g, "name", spec.groups.back().name, "a name no other load-case group has");
   }
   spec.load_table = read_load_table(deck);
+  spec.slurm = read_slurm_options(deck, issues);
   issues.throw_if_any();
   return spec;
 }

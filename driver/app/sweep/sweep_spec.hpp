@@ -11,6 +11,7 @@
 
 #include "fowtsim/io/deck.hpp"
 #include "fowtsim/io/schema.hpp"
+#include "sweep/slurm_options.hpp"
 
 namespace fowtsim::driver::sweep {
 
@@ -94,6 +95,7 @@ struct SweepSpec {
   TurbineClass turbine;                // IEC classes for the presets and the wind distribution
   std::vector<LoadCaseGroup> groups;   // load-case groups, expanded in order
   LoadTableSpec load_table;            // what the table holds
+  SlurmOptions slurm;                  // the spec's `slurm:` section (--slurm; the command line overrides)
   std::string hash;                    // deck_hash of the spec file
 };
 
