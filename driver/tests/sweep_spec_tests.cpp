@@ -123,7 +123,7 @@ load_cases:
   CHECK_FALSE(cases[4].fatigue);
 }
 
-TEST_CASE("sweep presets: DLC 6.1 parks the rotor in the steady 50-year EWM at yaw −8, 0, +8°", "[unit][sweep]") {
+TEST_CASE("sweep presets: DLC 6.1 idles the rotor in the turbulent 50-year EWM at yaw −8, 0, +8°", "[unit][sweep]") {
   const auto cases = expand(write_spec("preset_dlc61", R"(turbine: {wind_class: 1}
 load_cases:
   - name: dlc61
@@ -135,36 +135,20 @@ load_cases:
   CHECK(cases[0].name == "dlc61_yaw-8_s1");
   CHECK(cases[2].name == "dlc61_yaw0_s1");
   CHECK(cases[5].name == "dlc61_yaw8_s2");
-  // V_e50 = 1.4 V_ref = 70 m/s at hub height for class I, power law 0.11 (IEC 61400-1 ed.3 §6.3.2.1).
+  // V_e50 = 1.4 V_ref = 70 m/s at hub height for class I, profile exponent 0.11 (IEC 61400-1 ed.3
+  // §6.3.2.1), turbulent with σ1 = 0.11 V_hub (ed. 4 §6.3.3.2: the generator's EWM model).
   CHECK(cases[0].wind_speed_m_s.value() == 70.0);
-  CHECK(override_of(cases[0], "wind.model") == "power_law");
+  CHECK(override_of(cases[0], "wind.model") == "turbulent");
+  CHECK(override_of(cases[0], "wind.turbulence.model") == "EWM");
   CHECK(override_of(cases[0], "wind.shear_exponent") == "0.11");
   CHECK(override_of(cases[0], "wind.direction_deg") == "-8");
-  CHECK_FALSE(cases[0].wind_seed);  // steady wind: only the sea is random
+  CHECK(cases[0].wind_seed);
   CHECK(cases[0].wave_seed);
-  CHECK(override_of(cases[0], "structure.degrees_of_freedom.rotor_speed") == "held");
-  // Feathered at the base deck's own upper pitch limit (OC3: 1.570796 rad, 90°), which the baseline
-  // controller's lower limit is raised to: the case stays inside the limits `fowtsim run` checks.
+  // Idling: rotor free from rest, feathered at the base deck's own upper pitch limit (OC3:
+  // 1.570796 rad, 90°), the controller in its idling mode (generator off, pitch held there).
+  CHECK(override_of(cases[0], "controller.operating_mode") == "idling");
+  CHECK(override_of(cases[0], "structure.initial_conditions.rotor_speed_rpm") == "0");
   CHECK(override_of(cases[0], "structure.initial_conditions.blade_pitch_deg") == fmt::format("{}", 1.570796 * 180.0 / std::numbers::pi));
-  CHECK(override_of(cases[0], "controller.min_pitch_rad") == "1.570796");
-}
-
-TEST_CASE("sweep presets: DLC 6.1 feathers at the deck's own pitch limit and leaves a DISCON controller alone", "[unit][sweep]") {
-  // Intent: the parked preset takes its feather angle from the base deck's controller, and sets no
-  // controller key for a DISCON controller (it is parked by its own input file).
-  BaseDeckFacts base;
-  base.controller = {"baseline", 1.5};
-  const TurbineClass turbine{};
-  const auto keys = preset_deck_keys("dlc6.1", turbine, base.controller);
-  const auto value = [&](const std::vector<std::pair<std::string, std::string>>& k, const std::string& key) {
-    const auto it = std::find_if(k.begin(), k.end(), [&](const auto& kv) { return kv.first == key; });
-    return it == k.end() ? std::string("(unset)") : it->second;
-  };
-  CHECK(value(keys, "controller.min_pitch_rad") == "1.5");
-  CHECK(value(keys, "structure.initial_conditions.blade_pitch_deg") == fmt::format("{}", 1.5 * 180.0 / std::numbers::pi));
-  const auto discon = preset_deck_keys("dlc6.1", turbine, {"discon", 1.5});
-  CHECK(value(discon, "controller.min_pitch_rad") == "(unset)");
-  CHECK(value(discon, "structure.degrees_of_freedom.rotor_speed") == "held");
 }
 
 TEST_CASE("sweep specs: crossed factors give every combination, zipped ones pair values index by index", "[unit][sweep]") {

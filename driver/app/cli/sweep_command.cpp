@@ -55,6 +55,18 @@ void print_cases(std::FILE* out, const SweepSpec& spec, const std::vector<SweepC
                c.wave_seed ? std::to_string(*c.wave_seed) : "–", optional_number(c.hs_m, "{:.3g}"), optional_number(c.tp_s, "{:.3g}"),
                factors);
   }
+  // The table of contents of the basis: cases and simulated hours per load-case group.
+  fmt::print(out, "\n{:<14} {:<8} {:>6} {:>10}  {}\n", "group", "preset", "cases", "sim. hours", "analysis, γ_f");
+  for (std::size_t gi = 0; gi < spec.groups.size(); ++gi) {
+    const LoadCaseGroup& g = spec.groups[gi];
+    const auto n = std::count_if(cases.begin(), cases.end(), [&](const SweepCase& c) { return c.group == gi; });
+    std::string analysis = g.ultimate ? fmt::format("U γ_f {}", g.partial_safety_factor) : "";
+    if (g.fatigue) analysis += analysis.empty() ? "F" : ", F";
+    fmt::print(out, "{:<14} {:<8} {:>6} {:>10.2f}  {}\n", g.name, g.preset.empty() ? "–" : g.preset, n,
+               static_cast<double>(n) * (spec.transient_s + spec.analysis_s) / 3600.0, analysis);
+  }
+  fmt::print(out, "{:<14} {:<8} {:>6} {:>10.2f}\n", "total", "", cases.size(),
+             static_cast<double>(cases.size()) * (spec.transient_s + spec.analysis_s) / 3600.0);
 }
 
 const char* case_end_word(int exit_code) {

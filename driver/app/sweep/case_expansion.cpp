@@ -52,23 +52,35 @@ std::string name_piece(const std::string& text) {
   return piece;
 }
 
-// One varied quantity of a group: its values and what it sets.
+// One varied quantity of a group: per value, its name piece and the deck keys it sets.
 struct Axis {
-  std::string label;                // name piece prefix ("ws", "yaw", "wh", or the key's last part)
-  std::string deck_key;             // key it sets (also its name in the canonical case text)
-  std::vector<std::string> values;  // YAML scalar text per value
-  io::SourceLocation source;        // where the values are written in the spec
+  std::string label;                         // name piece prefix ("ws", "yaw", "wh", a preset's, or a key's last part)
+  std::vector<std::string> names;            // name piece per value
+  std::vector<std::vector<PresetKey>> keys;  // deck keys per value
+  io::SourceLocation source;                 // where the values are written in the spec
+  bool from_set = false;                     // a `set` key: applied again last
+  std::size_t size() const { return names.size(); }
 };
+
+Axis key_axis(const std::string& label, const std::string& key, const std::vector<std::string>& values, io::SourceLocation source,
+              bool from_set = false) {
+  Axis axis{label, {}, {}, std::move(source), from_set};
+  for (const std::string& v : values) {
+    axis.names.push_back(v);
+    axis.keys.push_back({{key, v}});
+  }
+  return axis;
+}
 
 // Index of each axis per factor combination, the first axis outermost.
 std::vector<std::vector<std::size_t>> combinations(const std::vector<Axis>& axes, Combination combine) {
   std::vector<std::vector<std::size_t>> result;
   if (combine == Combination::zip) {
     std::size_t length = 1;
-    for (const Axis& a : axes) length = std::max(length, a.values.size());
+    for (const Axis& a : axes) length = std::max(length, a.size());
     for (std::size_t i = 0; i < length; ++i) {
       std::vector<std::size_t> index;
-      for (const Axis& a : axes) index.push_back(a.values.size() == 1 ? 0 : i);
+      for (const Axis& a : axes) index.push_back(a.size() == 1 ? 0 : i);
       result.push_back(std::move(index));
     }
     return result;
@@ -77,28 +89,29 @@ std::vector<std::vector<std::size_t>> combinations(const std::vector<Axis>& axes
   while (true) {
     result.push_back(index);
     std::size_t k = axes.size();
-    while (k > 0 && ++index[k - 1] == axes[k - 1].values.size()) index[--k] = 0;
+    while (k > 0 && ++index[k - 1] == axes[k - 1].size()) index[--k] = 0;
     if (k == 0) return result;
   }
 }
 
-std::vector<Axis> group_axes(const LoadCaseGroup& g) {
+std::vector<Axis> group_axes(const LoadCaseGroup& g, const PresetPlan& plan) {
   auto numbers = [](const std::vector<double>& v) {
     std::vector<std::string> text;
     for (const double x : v) text.push_back(number_text(x));
     return text;
   };
   std::vector<Axis> axes;
-  if (!g.wind_speeds_m_s.empty()) axes.push_back({"ws", "wind.speed_m_s", numbers(g.wind_speeds_m_s), g.location});
-  const std::vector<double> yaw =
-      !g.yaw_misalignment_deg.empty() ? g.yaw_misalignment_deg
-      : g.preset == "dlc6.1"          ? kDlc61YawMisalignmentDeg
-                                      : std::vector<double>{};
-  if (!yaw.empty()) axes.push_back({"yaw", "wind.direction_deg", numbers(yaw), g.location});
-  if (!g.wave_heading_deg.empty()) axes.push_back({"wh", "waves.heading_deg", numbers(g.wave_heading_deg), g.location});
+  const std::vector<double>& speeds = g.wind_speeds_m_s.empty() ? plan.wind_speeds_m_s : g.wind_speeds_m_s;
+  if (!speeds.empty()) axes.push_back(key_axis("ws", "wind.speed_m_s", numbers(speeds), g.location));
+  for (const PresetFactor& f : plan.factors) {
+    if (f.label == "yaw" && !g.yaw_misalignment_deg.empty()) continue;  // the spec's own yaw list replaces the preset's
+    axes.push_back({f.label, f.names, f.keys, g.location, false});
+  }
+  if (!g.yaw_misalignment_deg.empty()) axes.push_back(key_axis("yaw", "wind.direction_deg", numbers(g.yaw_misalignment_deg), g.location));
+  if (!g.wave_heading_deg.empty()) axes.push_back(key_axis("wh", "waves.heading_deg", numbers(g.wave_heading_deg), g.location));
   for (const KeyFactor& f : g.set) {
     const std::size_t dot = f.key_path.rfind('.');
-    axes.push_back({dot == std::string::npos ? f.key_path : f.key_path.substr(dot + 1), f.key_path, f.values, f.location});
+    axes.push_back(key_axis(dot == std::string::npos ? f.key_path : f.key_path.substr(dot + 1), f.key_path, f.values, f.location, true));
   }
   return axes;
 }
@@ -106,9 +119,10 @@ std::vector<Axis> group_axes(const LoadCaseGroup& g) {
 class CaseBuilder {
  public:
   explicit CaseBuilder(SweepCase& c) : case_(c) {}
-  void set(const std::string& key, std::string value, io::SourceLocation source = {}) {
-    case_.overrides.push_back({key, std::move(value), std::move(source)});
+  void set(const std::string& key, std::string value, io::SourceLocation source = {}, bool flow = false) {
+    case_.overrides.push_back({key, std::move(value), std::move(source), flow});
   }
+  void set(const PresetKey& key, const io::SourceLocation& source) { set(key.key_path, key.yaml_value, source, key.flow); }
   // The value the case deck will hold for `key` if the sweep sets it.
   std::optional<std::string> value_of(const std::string& key) const {
     for (auto it = case_.overrides.rbegin(); it != case_.overrides.rend(); ++it)
@@ -153,7 +167,8 @@ std::vector<SweepCase> expand_cases(const SweepSpec& spec, const BaseDeckFacts& 
 
   for (std::size_t gi = 0; gi < spec.groups.size(); ++gi) {
     const LoadCaseGroup& g = spec.groups[gi];
-    const std::vector<Axis> axes = group_axes(g);
+    const PresetPlan plan = preset_plan(g.preset, spec.turbine, base.controller, spec.transient_s, !g.wind_speeds_m_s.empty());
+    const std::vector<Axis> axes = group_axes(g, plan);
     for (const std::vector<std::size_t>& index : combinations(axes, g.combine)) {
       for (int r = 1; r <= g.seeds; ++r) {
         SweepCase c;
@@ -162,18 +177,20 @@ std::vector<SweepCase> expand_cases(const SweepSpec& spec, const BaseDeckFacts& 
         c.fatigue = g.fatigue;
         CaseBuilder deck(c);
         deck.set("simulation.t_max_s", number_text(total_s));
-        for (const auto& [key, value] : preset_deck_keys(g.preset, spec.turbine, base.controller)) deck.set(key, value, g.location);
+        for (const PresetKey& key : plan.keys) deck.set(key, g.location);
 
         std::string name = g.name;
         std::string canonical = spec.name + "|" + g.name;
         for (std::size_t a = 0; a < axes.size(); ++a) {
-          const std::string& value = axes[a].values[index[a]];
-          deck.set(axes[a].deck_key, value, axes[a].source);
-          canonical += "|" + axes[a].deck_key + "=" + value;
+          for (const PresetKey& key : axes[a].keys[index[a]]) {
+            deck.set(key, axes[a].source);
+            canonical += "|" + key.key_path + "=" + key.yaml_value;
+          }
           // Wind speeds always name the case; other factors only when they vary in the group.
-          if (axes[a].label == "ws" || axes[a].values.size() > 1) {
-            name += "_" + axes[a].label + name_piece(value);
-            c.factors.emplace_back(axes[a].label, value);
+          const std::string& piece = axes[a].names[index[a]];
+          if (axes[a].label == "ws" || axes[a].size() > 1) {
+            name += "_" + axes[a].label + name_piece(piece);
+            c.factors.emplace_back(axes[a].label, piece);
           }
         }
         canonical += fmt::format("|realisation={}", r);
@@ -215,8 +232,9 @@ std::vector<SweepCase> expand_cases(const SweepSpec& spec, const BaseDeckFacts& 
           deck.set("waves.duration_s", number_text(total_s));
         }
         // `set` keys again last, so that they override anything the sweep derived above.
-        for (std::size_t a = axes.size() - g.set.size(); a < axes.size(); ++a)
-          deck.set(axes[a].deck_key, axes[a].values[index[a]], axes[a].source);
+        for (std::size_t a = 0; a < axes.size(); ++a)
+          if (axes[a].from_set)
+            for (const PresetKey& key : axes[a].keys[index[a]]) deck.set(key, axes[a].source);
         // A seed the spec sets itself is the one the case runs with, and the one the table shows.
         if (c.wind_seed) c.wind_seed = parse_seed(*deck.value_of("wind.turbulence.seed")).value_or(*c.wind_seed);
         if (c.wave_seed) c.wave_seed = parse_seed(*deck.value_of("waves.seed")).value_or(*c.wave_seed);

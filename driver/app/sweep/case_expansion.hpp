@@ -17,8 +17,9 @@ namespace fowtsim::driver::sweep {
 // One deck key a case sets over the base deck.
 struct DeckOverride {
   std::string key_path;        // e.g. "wind.turbulence.seed"
-  std::string yaml_value;      // YAML scalar text
+  std::string yaml_value;      // YAML scalar text (flow: a flow-style YAML list or mapping, written as is)
   io::SourceLocation source;   // spec location it comes from (line 0: derived by the sweep)
+  bool flow = false;           // yaml_value is flow-style YAML (a preset's controller.events)
 };
 
 struct SweepCase {
@@ -44,8 +45,8 @@ struct BaseDeckFacts {
 };
 BaseDeckFacts read_base_deck_facts(const std::filesystem::path& base_deck);
 
-// Every case of the spec, group by group, factors nested in the order wind speed, yaw, wave
-// heading, `set` keys, realisation (innermost). Throws io::DeckError naming the spec line when
+// Every case of the spec, group by group, factors nested in the order wind speed, the preset's
+// factors (event sign, event time, yaw), yaw, wave heading, `set` keys, realisation (innermost). Throws io::DeckError naming the spec line when
 // two cases would get the same name.
 std::vector<SweepCase> expand_cases(const SweepSpec& spec, const BaseDeckFacts& base);
 

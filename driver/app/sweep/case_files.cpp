@@ -28,6 +28,7 @@ struct KeyTree {
   std::string key;
   std::optional<std::string> value;
   std::vector<KeyTree> children;
+  bool flow = false;  // value is flow-style YAML, written as is
 
   KeyTree& child(const std::string& name) {
     for (KeyTree& c : children)
@@ -58,7 +59,7 @@ void emit(const KeyTree& node, int depth, std::string& out) {
     out += ':';
     if (c.value) {
       out += ' ';
-      out += yaml_scalar(*c.value);
+      out += c.flow ? *c.value : yaml_scalar(*c.value);
       out += '\n';
     } else {
       out += "\n";
@@ -94,6 +95,7 @@ std::string case_deck_text(const SweepSpec& spec, const SweepCase& c, const fs::
     }
     node->children.clear();
     node->value = o.yaml_value;
+    node->flow = o.flow;
   }
   // Relative when the decks and the base deck share a top folder (the sweep folder can move with
   // the project), absolute otherwise (no climb to the file-system root and down again).

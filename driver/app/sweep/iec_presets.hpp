@@ -1,11 +1,12 @@
 #pragma once
-// IEC 61400-1 ed.3/ed.4 and IEC 61400-3-1 design load cases as sweep presets: what each one sets
-// in the case decks. The numbers are the standard's; the sea states are the site's (the spec
-// gives them), since the standards define them only as conditional statistics of the metocean data.
-//   dlc1.1, dlc1.2  power production, normal turbulence model (NTM), normal sea state (NSS)
-//   dlc1.6          power production, NTM, severe sea state (SSS)
-//   dlc6.1          parked, steady extreme wind model (EWM) with the 50-year speed, yaw −8/0/+8°,
-//                   50-year extreme sea state (ESS)
+// The design load cases of IEC 61400-1 ed. 4 (Table 2) as applied to floating turbines by
+// IEC 61400-3-1 (Table 1) and IEC TS 61400-3-2, as sweep presets: what each one sets in its case
+// decks (wind model and event, controller events, parked rotor), the factors it varies (wind
+// speeds, yaw, event sign, event timing), its realisations, its analysis type (ultimate U and/or
+// fatigue F) and its partial safety factor for loads γ_f (IEC 61400-1 ed. 4 Table 3: normal N 1.35,
+// abnormal A 1.1; fatigue 1.0). The sea states are the site's: the spec gives them per group
+// (normal NSS, severe SSS, extreme ESS), since the standards define them only as conditional
+// statistics of the metocean data. The table of every preset: driver/app/sweep/README.md.
 #include <string>
 #include <string_view>
 #include <utility>
@@ -16,8 +17,8 @@
 
 namespace fowtsim::driver::sweep {
 
-// Realisations per wind speed of a preset: IEC 61400-1 asks for at least six 10-minute stochastic
-// realisations per wind-speed bin for the turbulent load cases.
+// Realisations per wind speed of a turbulent preset: IEC 61400-1 asks for at least six 10-minute
+// stochastic realisations per wind-speed bin.
 inline constexpr int kPresetSeeds = 6;
 
 // V_ref of an IEC 61400-1 wind turbine class (ed.3 Table 1): 50, 42.5, 37.5 m/s.
@@ -27,25 +28,68 @@ double reference_turbulence_intensity(const std::string& turbulence_class);
 // NTM σ1 = I_ref (0.75 V_hub + b), b = 5.6 m/s (ed.3 §6.3.1.3): the longitudinal standard deviation
 // the turbulence generator draws for a case (shown by --list).
 double ntm_sigma_m_s(const std::string& turbulence_class, double hub_speed_m_s);
-// Steady EWM at hub height, V_e50 = 1.4 V_ref (ed.3 §6.3.2.1; its profile (z/z_hub)^0.11).
+// EWM at hub height, V_e50 = 1.4 V_ref and V_e1 = 0.8 V_e50 (ed.3 §6.3.2.1; its steady profile (z/z_hub)^0.11).
 double ewm50_hub_speed_m_s(int wind_class);
+double ewm1_hub_speed_m_s(int wind_class);
 inline constexpr double kEwmShearExponent = 0.11;  // the EWM profile exponent (ed.3 §6.3.2.1)
-// Yaw misalignments of DLC 6.1 with the steady EWM (ed.3 Table 2, note on DLC 6.1): ±8°.
-inline const std::vector<double> kDlc61YawMisalignmentDeg = {-8.0, 0.0, 8.0};
+inline constexpr double kNwpShearExponent = 0.2;   // the normal wind profile exponent (ed.3 §6.3.1.2)
+
+// One design load case of the standard, as a preset.
+struct PresetInfo {
+  std::string_view name;       // "dlc2.3"
+  std::string_view situation;  // design situation, e.g. "power production plus fault"
+  std::string_view wind;       // wind condition, e.g. "EOG, V_r ± 2, V_out"
+  std::string_view sea;        // sea state kind, e.g. "NSS"
+  std::string_view other;      // events, yaw, parked rotor
+  bool ultimate = false;       // analysis U
+  bool fatigue = false;        // analysis F
+  double partial_safety_factor = 1.35;  // γ_f of its ultimate loads (N 1.35, A 1.1); 1 for fatigue only
+  int seeds = 1;               // realisations per factor combination by default
+  // Fatigue of an event (start-up, shutdown, fault): weighted by its occurrences a year.
+  bool events_per_year_needed() const { return fatigue && name != "dlc1.2" && name != "dlc6.4"; }
+};
+
+// Every preset, in the standard's order.
+const std::vector<PresetInfo>& preset_table();
+// The entry of a preset name (InputError for an unknown one; the spec's schema lists the names).
+const PresetInfo& preset_info(std::string_view name);
+std::vector<std::string> preset_names();
 
 // The kind of sea state a preset expects, for messages.
 std::string_view preset_sea_state_kind(const std::string& preset);
 
-// The base deck's controller, as a parked preset needs it: the feathered pitch is the deck's own
-// upper pitch limit, so that the parked case decks stay inside the limits `fowtsim run` checks.
+// The base deck's controller, as a parked preset needs it.
 struct BaseController {
   std::string type;                 // controller.type ("baseline", "discon"); "" without a controller section
   double max_pitch_rad = control::BaselineParams{}.max_pitch_rad;  // controller.max_pitch_rad (its default if unset)
 };
 
-// Deck keys a preset sets in every case (key path, YAML value), before the case's own factors.
-std::vector<std::pair<std::string, std::string>> preset_deck_keys(const std::string& preset, const TurbineClass& turbine,
-                                                                  const BaseController& controller);
+// A deck key a preset sets: a YAML scalar, or a flow-style YAML list or mapping (controller.events).
+struct PresetKey {
+  std::string key_path;
+  std::string yaml_value;
+  bool flow = false;  // yaml_value is flow-style YAML written as is
+};
+
+// A factor a preset varies: one value per case.
+struct PresetFactor {
+  std::string label;                 // name piece, e.g. "yaw", "dir", "tgl"
+  std::vector<std::string> names;    // name piece per value (after the label)
+  std::vector<std::vector<PresetKey>> keys;  // keys per value
+};
+
+// What a preset does to a group's cases.
+struct PresetPlan {
+  std::vector<PresetKey> keys;          // set in every case, before the group's own factors
+  std::vector<PresetFactor> factors;    // varied, after the wind speed
+  std::vector<double> wind_speeds_m_s;  // default hub-height speeds (empty: the preset's own, or none)
+};
+
+// The plan of `preset` for the spec's turbine: events at event_time_s (the analysis window's
+// start), default wind speeds only when the group lists none (`speeds_given` false). Throws
+// InputError naming the turbine key a default needs and the spec lacks.
+PresetPlan preset_plan(const std::string& preset, const TurbineClass& turbine, const BaseController& controller, double event_time_s,
+                       bool speeds_given);
 
 // Hs and Tp of a sea-state spec at a hub-height wind speed (kind table or relation, or fixed).
 struct SeaState {

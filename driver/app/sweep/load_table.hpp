@@ -12,8 +12,16 @@
 #include "sweep/case_expansion.hpp"
 #include "sweep/case_outcome.hpp"
 #include "sweep/sweep_spec.hpp"
+#include "sweep/ultimate_loads.hpp"
 
 namespace fowtsim::driver::sweep {
+
+// The extreme of a channel in a case's analysis window, and what every table channel read then.
+struct ChannelExtreme {
+  double value = 0.0;               // channel unit
+  double time_s = 0.0;              // [s]
+  std::vector<double> concurrent;   // LoadTable::channels at time_s (NaN: not in the outputs)
+};
 
 struct LoadTableRow {
   const SweepCase* case_ = nullptr;  // the case (names, factors, seeds)
@@ -22,6 +30,7 @@ struct LoadTableRow {
   std::vector<std::optional<post::ChannelStatistics>> statistics;  // per LoadTableSpec::channels
   std::vector<std::optional<double>> damage_equivalent_loads;      // per LoadTableSpec::fatigue
   std::vector<std::optional<double>> damage_sums;                  // per fatigue: Σ nᵢ L_RFᵢ^m
+  std::vector<std::optional<ChannelExtreme>> maxima, minima;       // per LoadTableSpec::channels
 };
 
 struct LifetimeRow {
@@ -40,6 +49,7 @@ struct LoadTable {
   std::vector<std::string> fatigue_units;      // their units
   std::vector<LoadTableRow> rows;              // one per case, in expansion order
   std::vector<LifetimeRow> lifetime;           // one per fatigue entry
+  std::vector<UltimateLoad> ultimate;          // the ultimate-load table (ultimate_loads.hpp)
   post::WindSpeedDistribution wind_distribution;  // what weighted the lifetime DELs
   double bin_width_m_s = 0.0;                  // wind-speed bin of each fatigue speed [m/s]
   std::vector<std::string> notes;              // what the reader must know: channels missing, bins without runs
@@ -49,7 +59,11 @@ struct LoadTable {
 LoadTable build_load_table(const SweepSpec& spec, const std::vector<SweepCase>& cases, const std::vector<std::string>& deck_hashes,
                            const SweepLayout& layout);
 
-// Writes BASE.csv, BASE.md and BASE.h5 (layout.table_base()). Numbers are written in their
+// Fills table.lifetime from the rows' damage sums (table.rows, wind_distribution and bin_width_m_s
+// set): each fatigue group weighted by its time fraction or its events a year (load_table.cpp).
+void add_lifetime(LoadTable& table, const SweepSpec& spec);
+
+// Writes BASE.csv, BASE_ultimate.csv, BASE.md and BASE.h5 (layout.table_base()). Numbers are written in their
 // shortest round-trip form, so equal tables give equal files.
 void write_load_table(const LoadTable& table, const std::filesystem::path& base);
 

@@ -102,6 +102,28 @@ std::string markdown_cell(const std::string& text) {
   return cell;
 }
 
+const char* sense_name(UltimateLoad::Sense sense) { return sense == UltimateLoad::Sense::maximum ? "max" : "min"; }
+
+std::string rule_text(const UltimateLoad& u) {
+  return fmt::format("{} of {}", u.mean_of_realisations ? "mean" : "largest", u.realisations);
+}
+
+// One row per channel and sense: the design value, its parts, where it governs and the concurrent values.
+void write_ultimate_csv(const LoadTable& t, const std::filesystem::path& path) {
+  std::string out = "channel,sense,unit,design_value,partial_safety_factor,characteristic_value,characteristic_rule,group,case,time_s";
+  for (std::size_t k = 0; k < t.channels.size(); ++k)
+    out += "," + csv_field(t.units[k].empty() ? t.channels[k] : t.channels[k] + "[" + t.units[k] + "]");
+  out += "\n";
+  for (const UltimateLoad& u : t.ultimate) {
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{}", csv_field(t.channels[u.channel]), sense_name(u.sense), csv_field(t.units[u.channel]),
+                       number(u.design_value), number(u.partial_safety_factor), number(u.characteristic_value), rule_text(u),
+                       csv_field(t.group_names[u.governing->case_->group]), csv_field(u.governing->case_->name), number(u.time_s));
+    for (const double v : u.concurrent) out += "," + (std::isnan(v) ? std::string() : number(v));
+    out += "\n";
+  }
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << out;
+}
+
 void write_markdown(const LoadTable& t, const std::filesystem::path& path) {
   std::size_t completed = 0;
   for (const LoadTableRow& r : t.rows) completed += r.outcome.state == CaseState::completed;
@@ -127,6 +149,18 @@ void write_markdown(const LoadTable& t, const std::filesystem::path& path) {
       md += fmt::format("| {} | {} | {} | {} | {} |\n", l.channel.channel, l.channel.wohler_exponent,
                         l.load ? fmt::format("{:.6g}", l.load->damage_equivalent_load) : "–",
                         t.fatigue_units[static_cast<std::size_t>(&l - t.lifetime.data())], l.runs);
+    md += "\n";
+  }
+  if (!t.ultimate.empty()) {
+    md += "## Ultimate loads\n\nDesign value γ_f F_k per channel and sense; F_k is the mean of a load case's realisations' "
+          "extremes with at least six of them, else their largest (driver/app/sweep/ultimate_loads.hpp). The governing "
+          "realisation, the time of its extreme and the concurrent values: load_table_ultimate.csv.\n\n"
+          "| channel | sense | design γ_f F_k | γ_f | F_k | rule | governing group | case | t [s] | unit |\n"
+          "|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const UltimateLoad& u : t.ultimate)
+      md += fmt::format("| {} | {} | {:.6g} | {} | {:.6g} | {} | {} | {} | {:.6g} | {} |\n", t.channels[u.channel], sense_name(u.sense),
+                        u.design_value, u.partial_safety_factor, u.characteristic_value, rule_text(u), t.group_names[u.governing->case_->group],
+                        u.governing->case_->name, u.time_s, t.units[u.channel]);
     md += "\n";
   }
   if (!t.notes.empty()) {
@@ -234,12 +268,31 @@ void write_hdf5(const LoadTable& t, const std::filesystem::path& path) {
   number_dataset(file.get(), "lifetime_DEL", dels, "channel unit", path);
   number_dataset(file.get(), "lifetime_damage_sum", damages, "channel unit^m", path);
   number_dataset(file.get(), "lifetime_runs", runs, "", path);
+  std::vector<std::string> u_channel, u_sense, u_case;
+  std::vector<double> u_design, u_gamma, u_characteristic, u_time;
+  for (const UltimateLoad& u : t.ultimate) {
+    u_channel.push_back(t.channels[u.channel]);
+    u_sense.push_back(sense_name(u.sense));
+    u_case.push_back(u.governing->case_->name);
+    u_design.push_back(u.design_value);
+    u_gamma.push_back(u.partial_safety_factor);
+    u_characteristic.push_back(u.characteristic_value);
+    u_time.push_back(u.time_s);
+  }
+  string_dataset(file.get(), "ultimate_channel", u_channel, path);
+  string_dataset(file.get(), "ultimate_sense", u_sense, path);
+  string_dataset(file.get(), "ultimate_case", u_case, path);
+  number_dataset(file.get(), "ultimate_design_value", u_design, "channel unit", path);
+  number_dataset(file.get(), "ultimate_partial_safety_factor", u_gamma, "", path);
+  number_dataset(file.get(), "ultimate_characteristic_value", u_characteristic, "channel unit", path);
+  number_dataset(file.get(), "ultimate_time_s", u_time, "s", path);
 }
 
 }  // namespace
 
 void write_load_table(const LoadTable& table, const std::filesystem::path& base) {
   write_csv(table, base.string() + ".csv");
+  write_ultimate_csv(table, base.string() + "_ultimate.csv");
   write_markdown(table, base.string() + ".md");
   write_hdf5(table, base.string() + ".h5");
 }

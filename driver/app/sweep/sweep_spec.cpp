@@ -25,6 +25,10 @@ Schema sweep_spec_schema() {
       {"wind_class", Schema::integer().at_least(1).at_most(3).default_value(1).doc("IEC 61400-1 class I/II/III: V_ref 50/42.5/37.5 m/s")},
       {"turbulence_class", Schema::choice({"A", "B", "C"}).default_value("B").doc("IEC turbulence category: I_ref 0.16/0.14/0.12")},
       {"hub_height_m", Schema::number().unit("m").greater_than(0.0).default_value(90.0).doc("hub height above the still-water level")},
+      {"rotor_diameter_m", Schema::number().unit("m").greater_than(0.0).optional().doc("rotor diameter D of the gust and shear events")},
+      {"cut_in_m_s", Schema::number().unit("m_s").greater_than(0.0).optional().doc("V_in at hub height: the presets' default speeds")},
+      {"rated_m_s", Schema::number().unit("m_s").greater_than(0.0).optional().doc("V_r at hub height: the presets' default speeds")},
+      {"cut_out_m_s", Schema::number().unit("m_s").greater_than(0.0).optional().doc("V_out at hub height: the presets' default speeds")},
   });
   const Schema table_row = Schema::map({
       {"wind_speed_m_s", Schema::number().unit("m_s").at_least(0.0).doc("hub-height mean wind speed")},
@@ -43,9 +47,9 @@ Schema sweep_spec_schema() {
   });
   const Schema group = Schema::map({
       {"name", Schema::string().doc("case-name prefix, e.g. dlc12")},
-      {"preset", Schema::choice({"dlc1.1", "dlc1.2", "dlc1.6", "dlc6.1"}).optional()
-                     .doc("IEC 61400-1/-3 design load case: sets the wind model, sea state kind and defaults")},
-      {"wind_speeds_m_s", numbers.optional().doc("hub-height mean wind speeds; absent = the base deck's")},
+      {"preset", Schema::choice(preset_names()).optional()
+                     .doc("IEC 61400-1/-3 design load case: wind, events, parked rotor, factors, γ_f (driver/app/sweep/README.md)")},
+      {"wind_speeds_m_s", numbers.optional().doc("hub-height mean wind speeds; absent = the preset's (from the turbine's speeds) or the base deck's")},
       {"seeds", Schema::integer().at_least(1).optional().doc("realisations per factor combination (presets: 6, else 1)")},
       {"sea_state", sea_state.optional().doc("waves per case; absent = the base deck's")},
       {"yaw_misalignment_deg", numbers.optional().doc("wind direction relative to the rotor axis (wind.direction_deg)")},
@@ -54,7 +58,14 @@ Schema sweep_spec_schema() {
                   .doc("any deck key by its path, one value per case: {controller.min_pitch_rad: [0, 0.05]}")},
       {"combine", Schema::choice({"cross", "zip"}).default_value("cross")
                       .doc("cross: every combination; zip: the i-th values together (single values shared)")},
-      {"fatigue", Schema::boolean().optional().doc("enters the lifetime DEL (default: true for dlc1.2 only)")},
+      {"fatigue", Schema::boolean().optional().doc("enters the lifetime DEL (default: the preset's analysis F; false without a preset)")},
+      {"ultimate", Schema::boolean().optional().doc("enters the ultimate-load table (default: the preset's analysis U; true without a preset)")},
+      {"partial_safety_factor", Schema::number().at_least(1.0).at_most(3.0).optional()
+                                    .doc("γ_f of the group's ultimate loads (default: the preset's, N 1.35 / A 1.1; 1.35 without a preset)")},
+      {"fatigue_time_fraction", Schema::number().greater_than(0.0).at_most(1.0).default_value(1.0)
+                                    .doc("share of the design life the group's conditions hold (e.g. availability 0.95 for dlc1.2, 0.05 for dlc6.4)")},
+      {"events_per_year", numbers.optional()
+                              .doc("event-weighted fatigue (start-ups, shutdowns, faults): occurrences a year, one value or one per wind speed")},
   });
   const Schema fatigue_channel = Schema::map({
       {"channel", Schema::string().doc("output channel")},
@@ -180,9 +191,22 @@ LoadCaseGroup read_group(const io::ValidatedDeck& g, const io::DeckNode& raw, Is
   group.wind_speeds_m_s = optional_numbers(g, "wind_speeds_m_s");
   group.yaw_misalignment_deg = optional_numbers(g, "yaw_misalignment_deg");
   group.wave_heading_deg = optional_numbers(g, "wave_heading_deg");
-  group.seeds = static_cast<int>(g.has("seeds") ? g.integer("seeds") : (group.preset.empty() ? 1 : kPresetSeeds));
   group.combine = g.string("combine") == "zip" ? Combination::zip : Combination::cross;
-  group.fatigue = g.has("fatigue") ? g.boolean("fatigue") : group.preset == "dlc1.2";
+  const PresetInfo* preset = group.preset.empty() ? nullptr : &preset_info(group.preset);
+  group.seeds = static_cast<int>(g.has("seeds") ? g.integer("seeds") : preset != nullptr ? preset->seeds : 1);
+  group.fatigue = g.has("fatigue") ? g.boolean("fatigue") : preset != nullptr && preset->fatigue;
+  group.ultimate = g.has("ultimate") ? g.boolean("ultimate") : preset == nullptr || preset->ultimate;
+  group.partial_safety_factor = g.has("partial_safety_factor") ? g.number("partial_safety_factor")
+                                : preset != nullptr && preset->ultimate ? preset->partial_safety_factor
+                                                                        : 1.35;
+  group.fatigue_time_fraction = g.number("fatigue_time_fraction");
+  group.events_per_year = optional_numbers(g, "events_per_year");
+  if (!group.events_per_year.empty() && group.events_per_year.size() != 1 && group.events_per_year.size() != group.wind_speeds_m_s.size())
+    issues.add(g, "events_per_year", fmt::format("{} values", group.events_per_year.size()),
+               fmt::format("one value, or one per listed wind speed ({})", group.wind_speeds_m_s.size()));
+  for (std::size_t i = 0; i < group.events_per_year.size(); ++i)
+    if (!(group.events_per_year[i] >= 0.0))
+      issues.add(g, fmt::format("events_per_year[{}]", i), fmt::format("{}", group.events_per_year[i]), "occurrences a year, ≥ 0");
   group.sea_state = read_sea_state(g, group.wind_speeds_m_s, issues);
 
   // `set` keys are deck paths with dots, which ValidatedDeck paths cannot name: read the node.
@@ -194,16 +218,18 @@ LoadCaseGroup read_group(const io::ValidatedDeck& g, const io::DeckNode& raw, Is
     }
   }
 
-  const bool operating = group.preset.rfind("dlc1.", 0) == 0;
-  if (operating && group.wind_speeds_m_s.empty())
-    issues.missing(g, "wind_speeds_m_s", fmt::format("the wind speed bins of {} (cut-in to cut-out)", group.preset));
-  if (group.preset == "dlc6.1" && !group.wind_speeds_m_s.empty())
-    issues.add(g, "wind_speeds_m_s", "wind speeds", "none: dlc6.1 blows the 50-year extreme wind 1.4 V_ref at hub height");
-  if (!group.preset.empty() && group.sea_state.kind == SeaStateSpec::Kind::from_base_deck && !g.has("sea_state"))
+  // Parked in the extreme wind: the preset sets the speed (V_e50 or V_e1) and the sea is one extreme sea state.
+  const bool extreme_wind = preset != nullptr && preset->wind.starts_with("turbulent EWM");
+  if (extreme_wind && !group.wind_speeds_m_s.empty())
+    issues.add(g, "wind_speeds_m_s", "wind speeds", fmt::format("none: {} blows the extreme wind model's speed ({})", group.preset, preset->wind));
+  if (group.preset == "dlc6.4" && group.wind_speeds_m_s.empty())
+    issues.missing(g, "wind_speeds_m_s", "the idling wind speeds of dlc6.4 (below 0.7 V_ref)");
+  if (preset != nullptr && preset->events_per_year_needed() && group.events_per_year.empty())
+    issues.missing(g, "events_per_year", fmt::format("how often a year {} happens ({}): it weights the event's damage", group.preset, preset->other));
+  if (preset != nullptr && group.sea_state.kind == SeaStateSpec::Kind::from_base_deck && !g.has("sea_state"))
     issues.missing(g, "sea_state", std::string(preset_sea_state_kind(group.preset)) + " (hs_m + tp_s, table or relation)");
-  if (group.preset == "dlc6.1" && group.sea_state.kind != SeaStateSpec::Kind::from_base_deck &&
-      group.sea_state.kind != SeaStateSpec::Kind::fixed)
-    issues.add(g, "sea_state", "a sea state by wind speed", "hs_m + tp_s of the 50-year extreme sea state");
+  if (extreme_wind && group.sea_state.kind != SeaStateSpec::Kind::from_base_deck && group.sea_state.kind != SeaStateSpec::Kind::fixed)
+    issues.add(g, "sea_state", "a sea state by wind speed", std::string("hs_m + tp_s of ") + std::string(preset_sea_state_kind(group.preset)));
 
   if (group.combine == Combination::zip) {
     std::size_t length = 1;
@@ -298,9 +324,16 @@ SweepSpec read_sweep_spec(const std::filesystem::path& spec_path) {
 
   if (deck.has("turbine")) {
     const io::ValidatedDeck t = deck.section("turbine");
-    spec.turbine = {static_cast<int>(t.integer("wind_class")), t.string("turbulence_class"), t.number("hub_height_m")};
+    spec.turbine.wind_class = static_cast<int>(t.integer("wind_class"));
+    spec.turbine.turbulence_class = t.string("turbulence_class");
+    spec.turbine.hub_height_m = t.number("hub_height_m");
+    auto optional = [&](const char* key) { return t.has(key) ? std::optional(t.number(key)) : std::nullopt; };
+    spec.turbine.rotor_diameter_m = optional("rotor_diameter_m");
+    spec.turbine.cut_in_m_s = optional("cut_in_m_s");
+    spec.turbine.rated_m_s = optional("rated_m_s");
+    spec.turbine.cut_out_m_s = optional("cut_out_m_s");
   } else {
-    spec.turbine = {1, "B", 90.0};
+    spec.turbine.turbulence_class = "B";
   }
 
   std::set<std::string> names;

@@ -61,6 +61,10 @@ struct LoadCaseGroup {
   std::vector<KeyFactor> set;                // other deck keys
   Combination combine = Combination::cross;  // how the factors above combine
   bool fatigue = false;                      // enters the lifetime DEL (DLC 1.2 by default)
+  bool ultimate = true;                      // enters the ultimate-load table (the preset's analysis U; else true)
+  double partial_safety_factor = 1.35;       // γ_f of its ultimate loads (the preset's; else N, 1.35)
+  double fatigue_time_fraction = 1.0;        // share of the design life this group's conditions hold (time-weighted fatigue)
+  std::vector<double> events_per_year;       // event-weighted fatigue: occurrences a year, one or one per wind speed
   io::SourceLocation location;               // the group's mapping in the spec
 };
 
@@ -83,6 +87,10 @@ struct TurbineClass {
   int wind_class = 1;            // IEC 61400-1 wind turbine class I, II, III (V_ref 50, 42.5, 37.5 m/s)
   std::string turbulence_class;  // "A", "B", "C" (I_ref 0.16, 0.14, 0.12)
   double hub_height_m = 90.0;    // hub height above the still-water level [m]
+  std::optional<double> rotor_diameter_m;  // D of the gust and shear events [m]
+  std::optional<double> cut_in_m_s;        // V_in, hub height [m/s]: the presets' default speeds derive from
+  std::optional<double> rated_m_s;         // V_r [m/s]   these three
+  std::optional<double> cut_out_m_s;       // V_out [m/s]
 };
 
 struct SweepSpec {
