@@ -2,8 +2,10 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -17,6 +19,7 @@
 #include "sweep/local_pool.hpp"
 #include "sweep/slurm_job.hpp"
 #include "sweep/sweep_spec.hpp"
+#include "sweep/trim.hpp"
 
 namespace fowtsim::driver {
 
@@ -215,21 +218,61 @@ int run_slurm(std::FILE* out, const SweepRequest& request, const SweepSpec& spec
   return 0;
 }
 
+
+// The steady runs of `sweep.trim` (trim.hpp), run here whatever the action (they are short), cached
+// in OUTPUT_DIR/trim; then their operating points go into the cases. Throws when one fails.
+void trim_cases_in_place(std::FILE* out, const SweepRequest& request, const SweepSpec& spec, std::vector<SweepCase>& cases,
+                         const SweepLayout& layout, int lock_descriptor) {
+  const std::vector<SweepCase> runs = trim_cases(spec, cases);
+  if (runs.empty()) return;
+  const SweepLayout trims = trim_layout(layout);
+  trims.create_directories();
+  const std::vector<std::string> hashes = write_case_decks(spec, runs, trims);
+  std::vector<CaseCommand> commands;
+  for (const std::size_t i : cases_to_run(runs, hashes, trims))
+    commands.push_back({runs[i].name, {"run", trims.deck(runs[i].name).string(), "-o", trims.output(runs[i].name).string()},
+                        trims.log(runs[i].name), spec.trim->duration_s});
+  fmt::print(out, "  trim             {} steady run(s) of {} s ({} cached), one per wind speed\n", runs.size(), spec.trim->duration_s,
+             runs.size() - commands.size());
+  std::fflush(out);
+  if (!commands.empty()) {
+    const InterruptHandlers handlers;
+    const PoolReport report = run_pool(request.executable.empty() ? own_executable() : request.executable, commands, request.jobs,
+                                       [&](const CaseExit& e) { write_exit_code(trims, e.name, e.exit_code); }, [](const PoolProgress&) {},
+                                       lock_descriptor);
+    if (report.interrupted_by) throw InputError({"sweep", std::nullopt, "trim", "rerun the sweep"}, "interrupted during the trim runs");
+  }
+  std::map<double, OperatingPoint> points;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const CaseOutcome outcome = read_case_outcome(trims, runs[i].name, hashes[i]);
+    if (outcome.state != CaseState::completed)
+      throw InputError({"sweep", std::nullopt, "trim", "see " + trims.log(runs[i].name).string()},
+                       fmt::format("the trim run {} did not complete ({}): {}", runs[i].name, state_name(outcome.state), outcome.message));
+    points[*runs[i].wind_speed_m_s] = read_operating_point(trims.output(runs[i].name), *spec.trim);
+  }
+  apply_trim(cases, points);
+}
+
 }  // namespace
 
 int run_sweep_command(const SweepRequest& request, std::FILE* out) {
   SweepSpec spec = read_sweep_spec(request.spec);
   if (request.output_dir) spec.output_dir = *request.output_dir;
-  const std::vector<SweepCase> cases = expand_cases(spec, read_base_deck_facts(spec.base_deck));
+  std::vector<SweepCase> cases = expand_cases(spec, read_base_deck_facts(spec.base_deck));
   const SweepLayout layout{spec.output_dir};
   if (request.action == SweepRequest::Action::list) {
     check_case_decks(spec, cases, layout);  // a case `fowtsim run` would reject shows here, not after hours of others
     print_cases(out, spec, cases);
+    if (spec.trim)
+      fmt::print(out, "trim: {} steady run(s) of {} s before the cases set the initial conditions of {} operating case(s)\n",
+                 trim_cases(spec, cases).size(), spec.trim->duration_s,
+                 std::count_if(cases.begin(), cases.end(), [](const SweepCase& c) { return is_trimmed(c); }));
     return 0;
   }
   // One sweep per folder, before any file in it changes (folder_lock.hpp).
   const SweepFolderLock lock(layout.root, fmt::format("fowtsim sweep {} ({})", request.spec.string(), action_name(request.action)), out);
   layout.create_directories();
+  if (spec.trim) trim_cases_in_place(out, request, spec, cases, layout, lock.descriptor());
   const std::vector<std::string> hashes = write_case_decks(spec, cases, layout);
   switch (request.action) {
     case SweepRequest::Action::collect:

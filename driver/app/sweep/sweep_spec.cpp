@@ -20,6 +20,12 @@ Schema sweep_spec_schema() {
       {"output_dir", Schema::string().optional().doc("decks, outputs, logs and the load table, relative to the working folder; absent = runs/sweeps/<name>")},
       {"transient_s", Schema::number().unit("s").at_least(0.0).default_value(120.0).doc("start discarded from the statistics")},
       {"analysis_s", Schema::number().unit("s").greater_than(0.0).default_value(600.0).doc("analysed length after the transient")},
+      {"trim", Schema::map({
+                   {"duration_s", Schema::number().unit("s").greater_than(0.0).at_most(3600.0).default_value(400.0)
+                                      .doc("length of the steady run per wind speed")},
+                   {"average_s", Schema::number().unit("s").greater_than(0.0).default_value(150.0)
+                                     .doc("its averaged end: at least one surge period of a floating platform")},
+               }).optional().doc("start each operating case at the steady operating point of its wind speed (a steady run per speed)")},
   });
   const Schema turbine = Schema::map({
       {"wind_class", Schema::integer().at_least(1).at_most(3).default_value(1).doc("IEC 61400-1 class I/II/III: V_ref 50/42.5/37.5 m/s")},
@@ -321,6 +327,12 @@ SweepSpec read_sweep_spec(const std::filesystem::path& spec_path) {
                                         : std::filesystem::path("runs") / "sweeps" / spec.name;
   spec.transient_s = s.number("transient_s");
   spec.analysis_s = s.number("analysis_s");
+  if (s.has("trim")) {
+    spec.trim = TrimSpec{s.number("trim.duration_s"), s.number("trim.average_s")};
+    if (spec.trim->average_s > spec.trim->duration_s)
+      issues.add(s, "trim.average_s", fmt::format("{} s", spec.trim->average_s),
+                 fmt::format("at most trim.duration_s ({} s)", spec.trim->duration_s));
+  }
 
   if (deck.has("turbine")) {
     const io::ValidatedDeck t = deck.section("turbine");

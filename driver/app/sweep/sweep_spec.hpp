@@ -93,6 +93,12 @@ struct TurbineClass {
   std::optional<double> cut_out_m_s;       // V_out [m/s]
 };
 
+// Steady runs that trim the operating cases' initial conditions (trim.hpp).
+struct TrimSpec {
+  double duration_s = 400.0;  // length of each steady run [s]: long enough for the platform's surge to settle
+  double average_s = 150.0;   // averaged end of it [s]: at least one surge period of a floating platform
+};
+
 struct SweepSpec {
   std::filesystem::path spec_path;     // the spec file as given
   std::string name;                    // sweep name: seeds and the default output folder derive from it
@@ -104,6 +110,7 @@ struct SweepSpec {
   std::vector<LoadCaseGroup> groups;   // load-case groups, expanded in order
   LoadTableSpec load_table;            // what the table holds
   SlurmOptions slurm;                  // the spec's `slurm:` section (--slurm; the command line overrides)
+  std::optional<TrimSpec> trim;        // sweep.trim: start operating cases at their steady operating point
   std::string hash;                    // deck_hash of the spec file
 };
 
