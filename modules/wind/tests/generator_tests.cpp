@@ -206,29 +206,13 @@ TEST_CASE("generated fields have the IEC Kaimal spectra, intensity and coherence
 // TurbSim; 3.7 % here): against 0.11 V_hub itself the tolerance is that deficit plus the statistical
 // one (half the relative variance tolerance). 40 m/s = V_1 of class I, 600 s at 4 Hz; 1 s.
 TEST_CASE("the turbulent EWM generates sigma_1 = 0.11 V_hub at the hub", "[verification][wind][turbulence]") {
-  constexpr int seeds = 200;
-  double variance_sum = 0.0, variance_square_sum = 0.0, record_sigma = 0.0, iec_sigma = 0.0;
-  for (int seed = 1; seed <= seeds; ++seed) {
-    WindParams p = small_turbulent_field(static_cast<std::uint64_t>(seed));
-    p.turbulence.model = TurbulenceModel::EWM;
-    p.speed_m_s = 40.0;
-    p.turbulence.ny = 3;            // (1, 1) is the hub: y = 0, z = 90 m
-    p.turbulence.width_m = 40.0;
-    const GeneratedTurbulence g = generate_turbulence(p);
-    record_sigma = g.stats.expected_sigma_m_s[0];
-    iec_sigma = g.stats.iec_sigma_m_s[0];
-    const double sigma = verification::grid_point_statistics(g.field, 1, 1).sigma_m_s[0];
-    variance_sum += sigma * sigma;
-    variance_square_sum += sigma * sigma * sigma * sigma;
-  }
-  CHECK(iec_sigma == Approx(0.11 * 40.0).epsilon(1e-15));
-  const double mean = variance_sum / seeds;
-  const double spread = std::sqrt((variance_square_sum / seeds - mean * mean) * seeds / (seeds - 1.0));
-  const double tolerance = 4.0 * spread / std::sqrt(double(seeds));  // 4 standard errors of the mean variance
-  INFO("hub u sigma " << std::sqrt(mean) << " m/s; record target " << record_sigma << " m/s; 0.11 V_hub = " << iec_sigma
-                      << " m/s; tolerance on sigma² " << tolerance << " m²/s²");
-  CHECK(std::abs(mean - record_sigma * record_sigma) < tolerance);
-  const double deficit = 1.0 - record_sigma / iec_sigma, statistical = 0.5 * tolerance / mean;
+  const verification::EwmHubSigma e = verification::ewm_hub_sigma(200);
+  CHECK(e.iec_sigma_m_s == Approx(0.11 * 40.0).epsilon(1e-15));
+  const double tolerance = 4.0 * e.standard_error_m2_s2;  // 4 standard errors of the mean variance
+  INFO("hub u sigma " << std::sqrt(e.mean_variance_m2_s2) << " m/s; record target " << e.record_sigma_m_s
+                      << " m/s; 0.11 V_hub = " << e.iec_sigma_m_s << " m/s; tolerance on sigma² " << tolerance << " m²/s²");
+  CHECK(std::abs(e.mean_variance_m2_s2 - e.record_sigma_m_s * e.record_sigma_m_s) < tolerance);
+  const double deficit = 1.0 - e.record_sigma_m_s / e.iec_sigma_m_s, statistical = 0.5 * tolerance / e.mean_variance_m2_s2;
   CHECK(deficit < 0.05);  // the band [1/T, 2 Hz] holds > 90 % of the Kaimal variance at 40 m/s
-  CHECK(std::abs(std::sqrt(mean) / iec_sigma - 1.0) < deficit + statistical);
+  CHECK(std::abs(std::sqrt(e.mean_variance_m2_s2) / e.iec_sigma_m_s - 1.0) < deficit + statistical);
 }
