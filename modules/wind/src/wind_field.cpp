@@ -51,7 +51,8 @@ WindField::WindField(WindParams params, std::shared_ptr<const FullField> field)
 }
 
 WindField::Frame WindField::frame_at(double time_s) const {
-  Frame f{wind_to_inertial_, wind_event_at(event_, time_s)};
+  Frame f{wind_to_inertial_, wind_event_at(event_, time_s), {}};
+  if (params_.model == WindModel::uniform_file) f.uniform = uniform_wind_at(params_.uniform, time_s);
   // Only a turning event rebuilds R (without one, R stays bit for bit the deck's).
   if (f.event.direction_rad != 0.0)
     f.wind_to_inertial =
@@ -65,8 +66,7 @@ Vec3 WindField::velocity_at(const Vec3& p, double time_s, const Frame& frame, bo
   const Vec3 p_wind = frame.wind_to_inertial.transpose() * (p - reference_point_m_) + reference_point_m_;
   Vec3 v_wind;
   if (params_.model == WindModel::uniform_file) {
-    v_wind = uniform_wind_velocity(uniform_wind_at(params_.uniform, time_s), p_wind, params_.reference_height_m,
-                                   params_.reference_length_m);
+    v_wind = uniform_wind_velocity(frame.uniform, p_wind, params_.reference_height_m, params_.reference_length_m);
   } else if (field_ && covers(*field_, p_wind)) {
     v_wind = full_field_velocity(*field_, p_wind, time_s);
   } else if (field_) {
@@ -76,7 +76,7 @@ Vec3 WindField::velocity_at(const Vec3& p, double time_s, const Frame& frame, bo
   } else {
     v_wind = Vec3(profile_speed(params_, p_wind.z()), 0.0, 0.0);
   }
-  if (p_wind.z() > 0.0)
+  if (event_.type != WindEventType::none && p_wind.z() > 0.0)
     v_wind.x() += frame.event.speed_m_s + frame.event.vertical_shear_per_s * (p_wind.z() - reference_point_m_.z()) +
                   frame.event.horizontal_shear_per_s * p_wind.y();
   const Vec3 v = frame.wind_to_inertial * v_wind;

@@ -57,10 +57,12 @@ class WindField {
   Mat3 wind_to_inertial_;  // R above, without an event's turn
   Vec3 reference_point_m_; // (0, 0, z_ref): pivot of the box rotation
   WindEvent event_;        // amplitudes of params.event (type none: adds nothing)
-  // What every point shares at one time: the rotation (with the event's turn) and the event's ΔV terms.
+  // What every point shares at one time: the rotation (with the event's turn), the event's ΔV terms
+  // and the uniform file's columns interpolated to the time.
   struct Frame {
     Mat3 wind_to_inertial;
     WindEventValue event;
+    UniformWindRow uniform;
   };
   Frame frame_at(double time_s) const;
   Vec3 velocity_at(const Vec3& p_m, double time_s, const Frame& frame, bool count_below) const;
