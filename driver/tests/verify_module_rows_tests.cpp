@@ -42,10 +42,11 @@ TEST_CASE("fowtsim verify aero: Cp peak, AeroDyn operating points, momentum bala
   check_case("aero", 5, 14);
 }
 
-TEST_CASE("fowtsim verify wind: IEC σ, generated σ, sampler coherence, TurbSim files", "[verification][wind]") {
-  // NTM and ETM σ1, generated σ u/v/w, three sampler methods. With ../shared: the 60 s file
-  // against Wind1VelX/Y/Z and the 600 s file's hub statistics against TurbSim's summary.
-  check_case("wind", 8, 7);
+TEST_CASE("fowtsim verify wind: IEC σ, events, EWM, generated σ, sampler coherence, TurbSim files", "[verification][wind]") {
+  // NTM and ETM σ1, the five IEC events, EWM σ1 and its generated hub σ, generated σ u/v/w, three
+  // sampler methods. With ../shared: the 60 s file against Wind1VelX/Y/Z and the 600 s file's hub
+  // statistics against TurbSim's summary.
+  check_case("wind", 15, 7);
 }
 
 TEST_CASE("fowtsim verify multibody: precession, heave period, conservation, OC3 masses, RR blades", "[verification][multibody]") {

@@ -1,5 +1,6 @@
 #include "run/turbulence_command.hpp"
 
+#include <array>
 #include <chrono>
 
 #include <fmt/format.h>
@@ -40,7 +41,7 @@ int run_turbulence_command(const std::filesystem::path& deck_path, const std::op
   const wind::GeneratedTurbulence g = wind::generate_turbulence(params);
   const double generate_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string description = fmt::format("fowtsim IEC Kaimal {} class {}, {} m/s at {} m, seed {}",
-                                              params.turbulence.model == wind::TurbulenceModel::NTM ? "NTM" : "ETM",
+                                              std::array{"NTM", "ETM", "EWM"}[static_cast<int>(params.turbulence.model)],
                                               "ABC"[static_cast<int>(params.turbulence.category)], params.speed_m_s,
                                               params.reference_height_m, params.turbulence.seed);
   const io::TurbSimField field = to_turbsim(g.field, description);

@@ -210,6 +210,32 @@ std::vector<VerificationRow> verify_wind(std::FILE* out) {
   rows.push_back(below("wind", "ETM class I B σ1 at 12 m/s vs 3.12256: rel. diff", std::abs(sigma_etm / 3.12256 - 1.0), 1e-12,
                        "IEC 61400-1 ed. 3 eq. 19"));
 
+  // The IEC 61400-1 events (EOG, EDC, ECD, EWS) of the wind field against the standard's formulas at
+  // the hub and the rotor disk's edges (the module test "the verify command's event check"): the
+  // same closed forms in another order, round-off only; measured ≤ 2e-15, limit 10×.
+  const struct {
+    wind::WindEventType type;
+    const char* name;
+  } events[] = {{wind::WindEventType::EOG, "EOG"}, {wind::WindEventType::EDC, "EDC"}, {wind::WindEventType::ECD, "ECD"},
+                {wind::WindEventType::EWS_vertical, "EWS vertical"}, {wind::WindEventType::EWS_horizontal, "EWS horizontal"}};
+  for (const auto& e : events) {
+    double worst = 0.0;
+    for (int sign : {1, -1})
+      for (double direction : {0.0, 20.0}) worst = std::max(worst, wind::verification::iec_event_worst_deviation(e.type, sign, direction));
+    rows.push_back(below("wind", fmt::format("{} vs IEC formula at hub and disk edges: worst |Δv|/V_hub", e.name), worst, 2e-14,
+                         "IEC 61400-1 ed. 3 §6.3.2 / ed. 4 §6.3.3"));
+  }
+  // The turbulent EWM: the generator's σ1 is 0.11 V_hub, and the hub u variance over 200 seeds
+  // matches the record's target within 4 standard errors (the module test of the same name).
+  const wind::verification::EwmHubSigma ewm = wind::verification::ewm_hub_sigma(200);
+  fmt::print(out, "Turbulent EWM at 40 m/s, 200 seeds: hub σ u = {:.4f} m/s, record target {:.4f}, 0.11 V_hub = {:.4f}\n",
+             std::sqrt(ewm.mean_variance_m2_s2), ewm.record_sigma_m_s, ewm.iec_sigma_m_s);
+  rows.push_back(below("wind", "EWM σ1 vs 0.11 V_hub at 40 m/s: rel. diff", std::abs(ewm.iec_sigma_m_s / 4.4 - 1.0), 1e-15,
+                       "IEC 61400-1 ed. 3 §6.3.2.1"));
+  rows.push_back(below("wind", "EWM hub σ² (200 seeds) vs record target [m²/s²]",
+                       std::abs(ewm.mean_variance_m2_s2 - ewm.record_sigma_m_s * ewm.record_sigma_m_s), 4.0 * ewm.standard_error_m2_s2,
+                       "4 standard errors of the seeds' mean"));
+
   constexpr int kSeeds = 240;
   const GeneratedSigma g = generated_sigma(kSeeds);
   fmt::print(out, "Generated 4×3 fields (class A, 10 m/s, 600 s at 4 Hz), {} seeds: σ u, v, w = {:.4f}, {:.4f}, {:.4f} m/s; "

@@ -4,31 +4,13 @@
 
 namespace fowtsim::wind {
 
-double reference_turbulence_intensity(TurbulenceCategory category) {
-  switch (category) {
-    case TurbulenceCategory::A: return 0.16;
-    case TurbulenceCategory::B: return 0.14;
-    case TurbulenceCategory::C: return 0.12;
-  }
-  return 0.14;
-}
-
-double reference_wind_speed(int iec_wind_class) {
-  if (iec_wind_class == 1) return 50.0;
-  if (iec_wind_class == 2) return 42.5;
-  return 37.5;
-}
-
 double longitudinal_sigma(const TurbulenceParams& turbulence, double v_hub_m_s) {
-  const double i_ref = reference_turbulence_intensity(turbulence.category);
-  if (turbulence.model == TurbulenceModel::NTM) return i_ref * (0.75 * v_hub_m_s + 5.6);
-  const double c = 2.0;  // [m/s], IEC 61400-1 ed. 3 eq. 19
-  const double v_ave = 0.2 * reference_wind_speed(turbulence.iec_wind_class);
-  return c * i_ref * (0.072 * (v_ave / c + 3.0) * (v_hub_m_s / c - 4.0) + 10.0);
-}
-
-double turbulence_scale_parameter(double hub_height_m) {
-  return hub_height_m <= 60.0 ? 0.7 * hub_height_m : 42.0;
+  switch (turbulence.model) {
+    case TurbulenceModel::NTM: return ntm_sigma(turbulence.category, v_hub_m_s);
+    case TurbulenceModel::ETM: return etm_sigma(turbulence.category, turbulence.iec_wind_class, v_hub_m_s);
+    case TurbulenceModel::EWM: return ewm_sigma(v_hub_m_s);
+  }
+  return ntm_sigma(turbulence.category, v_hub_m_s);
 }
 
 double KaimalModel::spectrum(int k, double f) const {

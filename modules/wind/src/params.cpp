@@ -4,6 +4,8 @@
 #include <string>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/wind/iec_conditions.hpp"
+#include "fowtsim/wind/iec_events.hpp"
 
 namespace fowtsim::wind {
 namespace {
@@ -36,9 +38,8 @@ void validate_turbulence(const TurbulenceParams& t, double speed_m_s, double hub
           "at least 4 time steps [s]", t.duration_s);
   require(t.duration_s / t.dt_s <= 1e7, k + "duration_s", "at most 1e7 time steps", t.duration_s / t.dt_s);
   if (t.model == TurbulenceModel::ETM) {
-    const double c = 2.0;  // IEC eq. 19 is defined for V_hub/c − 4 ... ; require a positive sigma
-    const double v_ave = 0.2 * (t.iec_wind_class == 1 ? 50.0 : t.iec_wind_class == 2 ? 42.5 : 37.5);
-    require(0.072 * (v_ave / c + 3.0) * (speed_m_s / c - 4.0) + 10.0 > 0.0, "speed_m_s",
+    // IEC eq. 19 is defined where it gives a positive sigma (low speeds can make it negative).
+    require(etm_sigma(t.category, t.iec_wind_class, speed_m_s) > 0.0, "speed_m_s",
             "a hub speed giving a positive ETM standard deviation", speed_m_s);
   }
 }
@@ -66,6 +67,16 @@ void validate(const WindParams& p) {
     require(p.speed_m_s > 0.0, "speed_m_s", "a positive hub speed for model turbulent", p.speed_m_s);
     validate_turbulence(p.turbulence, p.speed_m_s, p.reference_height_m);
   }
+  if (p.model == WindModel::uniform_file) {
+    if (p.uniform.rows.empty())
+      throw InputError(ErrorContext{"wind", std::nullopt, "wind.file", ""},
+                       "wind.file: expected an OpenFAST uniform wind file (.hh) with data rows for model uniform_file");
+    require(std::isfinite(p.reference_length_m) && p.reference_length_m > 0.0, "reference_length_m",
+            "a positive reference length [m] of the file's linear shears for model uniform_file (InflowWind RefLength, "
+            "usually the rotor diameter)",
+            p.reference_length_m);
+  }
+  make_wind_event(p);  // the event's own checks (rotor diameter, sign, its speed range)
 }
 
 WindModel parse_wind_model(const std::string& text) {
@@ -74,7 +85,8 @@ WindModel parse_wind_model(const std::string& text) {
   if (text == "log") return WindModel::log;
   if (text == "bts") return WindModel::bts;
   if (text == "turbulent") return WindModel::turbulent;
-  bad_choice("model", text, "steady, power_law, log, bts, turbulent");
+  if (text == "uniform_file") return WindModel::uniform_file;
+  bad_choice("model", text, "steady, power_law, log, bts, turbulent, uniform_file");
 }
 
 TurbulenceCategory parse_turbulence_category(const std::string& text) {
@@ -87,7 +99,18 @@ TurbulenceCategory parse_turbulence_category(const std::string& text) {
 TurbulenceModel parse_turbulence_model(const std::string& text) {
   if (text == "NTM") return TurbulenceModel::NTM;
   if (text == "ETM") return TurbulenceModel::ETM;
-  bad_choice("turbulence.model", text, "NTM, ETM");
+  if (text == "EWM") return TurbulenceModel::EWM;
+  bad_choice("turbulence.model", text, "NTM, ETM, EWM");
+}
+
+WindEventType parse_wind_event_type(const std::string& text) {
+  if (text == "none") return WindEventType::none;
+  if (text == "EOG") return WindEventType::EOG;
+  if (text == "EDC") return WindEventType::EDC;
+  if (text == "ECD") return WindEventType::ECD;
+  if (text == "EWS_vertical") return WindEventType::EWS_vertical;
+  if (text == "EWS_horizontal") return WindEventType::EWS_horizontal;
+  bad_choice("event.type", text, "none, EOG, EDC, ECD, EWS_vertical, EWS_horizontal");
 }
 
 }  // namespace fowtsim::wind

@@ -5,6 +5,11 @@
 namespace fowtsim::wind {
 
 std::optional<std::string> box_length_warning(const WindField& field, double t_end_s, double upwind_reach_m) {
+  const WindParams& p = field.params();
+  if (p.model == WindModel::uniform_file && !p.uniform.rows.empty() && t_end_s > p.uniform.rows.back().time_s)
+    return fmt::format("the uniform wind file {} ends at {:.6g} s, the run goes to {:.6g} s: its last row is held after it (as "
+                       "InflowWind does)",
+                       p.file, p.uniform.rows.back().time_s, t_end_s);
   const FullField* box = field.full_field();
   if (box == nullptr || !(box->u_hub_m_s > 0.0)) return std::nullopt;
   const double lead_s = (box->initial_x_m() + upwind_reach_m) / box->u_hub_m_s;  // the box passing the rotor
@@ -21,6 +26,12 @@ std::optional<std::string> box_length_warning(const WindField& field, double t_e
   return fmt::format("the turbulence box covers {:.6g} s ({}), the run needs {:.6g} s ({:.6g} s + {:.3g} s for the box to pass the "
                      "rotor at {:.3g} m/s): the run stops where the box ends, at t ≈ {:.6g} s; {}",
                      covered_s, source, needed_s, t_end_s, lead_s, box->u_hub_m_s, covered_s - lead_s, fix);
+}
+
+std::optional<std::string> event_timing_warning(const WindField& field, double t_end_s) {
+  const WindEventParams& e = field.params().event;
+  if (e.type == WindEventType::none || e.start_s < t_end_s) return std::nullopt;
+  return fmt::format("wind.event.start_s = {:.6g} s is not before the run's end, {:.6g} s: the event never acts", e.start_s, t_end_s);
 }
 
 }  // namespace fowtsim::wind

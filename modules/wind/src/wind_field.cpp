@@ -12,6 +12,8 @@
 namespace fowtsim::wind {
 namespace {
 
+constexpr double kDegree = std::numbers::pi / 180.0;
+
 bool uses_full_field(WindModel model) { return model == WindModel::bts || model == WindModel::turbulent; }
 
 }  // namespace
@@ -25,7 +27,8 @@ double profile_speed(const WindParams& p, double z) {
       if (z <= p.roughness_m) return 0.0;
       return p.speed_m_s * std::log(z / p.roughness_m) / std::log(p.reference_height_m / p.roughness_m);
     case WindModel::bts:
-    case WindModel::turbulent: break;
+    case WindModel::turbulent:
+    case WindModel::uniform_file: break;
   }
   return 0.0;
 }
@@ -40,19 +43,31 @@ WindField::WindField(WindParams params, std::shared_ptr<const FullField> field)
     validate(*field_);
   } else if (field_) {
     throw InputError(ErrorContext{"wind", std::nullopt, "wind.model", ""},
-                     "a full field was given to an analytic wind model (steady/power_law/log)");
+                     "a full field was given to a wind model without one (steady/power_law/log/uniform_file)");
   }
-  constexpr double deg = std::numbers::pi / 180.0;
-  wind_to_inertial_ = rotation_z(-params_.direction_deg * deg) * rotation_y(-params_.upflow_deg * deg);
+  wind_to_inertial_ = rotation_z(-params_.direction_deg * kDegree) * rotation_y(-params_.upflow_deg * kDegree);
   reference_point_m_ = Vec3(0.0, 0.0, params_.reference_height_m);
+  event_ = make_wind_event(params_);
 }
 
-Vec3 WindField::velocity(const Vec3& p, double time_s) const { return velocity_at(p, time_s, true); }
+WindField::Frame WindField::frame_at(double time_s) const {
+  Frame f{wind_to_inertial_, wind_event_at(event_, time_s), {}};
+  if (params_.model == WindModel::uniform_file) f.uniform = uniform_wind_at(params_.uniform, time_s);
+  // Only a turning event rebuilds R (without one, R stays bit for bit the deck's).
+  if (f.event.direction_rad != 0.0)
+    f.wind_to_inertial =
+        rotation_z(-(params_.direction_deg * kDegree + f.event.direction_rad)) * rotation_y(-params_.upflow_deg * kDegree);
+  return f;
+}
 
-Vec3 WindField::velocity_at(const Vec3& p, double time_s, bool count_below) const {
-  const Vec3 p_wind = wind_to_inertial_.transpose() * (p - reference_point_m_) + reference_point_m_;
+Vec3 WindField::velocity(const Vec3& p, double time_s) const { return velocity_at(p, time_s, frame_at(time_s), true); }
+
+Vec3 WindField::velocity_at(const Vec3& p, double time_s, const Frame& frame, bool count_below) const {
+  const Vec3 p_wind = frame.wind_to_inertial.transpose() * (p - reference_point_m_) + reference_point_m_;
   Vec3 v_wind;
-  if (field_ && covers(*field_, p_wind)) {
+  if (params_.model == WindModel::uniform_file) {
+    v_wind = uniform_wind_velocity(frame.uniform, p_wind, params_.reference_height_m, params_.reference_length_m);
+  } else if (field_ && covers(*field_, p_wind)) {
     v_wind = full_field_velocity(*field_, p_wind, time_s);
   } else if (field_) {
     if (count_below || p_wind.z() >= field_->z_bottom_m) ++outside_queries_;
@@ -61,7 +76,10 @@ Vec3 WindField::velocity_at(const Vec3& p, double time_s, bool count_below) cons
   } else {
     v_wind = Vec3(profile_speed(params_, p_wind.z()), 0.0, 0.0);
   }
-  const Vec3 v = wind_to_inertial_ * v_wind;
+  if (event_.type != WindEventType::none && p_wind.z() > 0.0)
+    v_wind.x() += frame.event.speed_m_s + frame.event.vertical_shear_per_s * (p_wind.z() - reference_point_m_.z()) +
+                  frame.event.horizontal_shear_per_s * p_wind.y();
+  const Vec3 v = frame.wind_to_inertial * v_wind;
   if (!v.allFinite())
     throw NumericalError(ErrorContext{"wind", time_s, "wind velocity", "check the wind input"},
                          "non-finite wind velocity");
@@ -73,14 +91,16 @@ void WindField::velocities(std::span<const Vec3> points, double time_s, std::spa
     throw InputError(ErrorContext{"wind", time_s, "out", ""},
                      "points.size() (" + std::to_string(points.size()) + ") != out.size() (" +
                          std::to_string(out.size()) + ")");
-  for (std::size_t i = 0; i < points.size(); ++i) out[i] = velocity(points[i], time_s);
+  const Frame frame = frame_at(time_s);
+  for (std::size_t i = 0; i < points.size(); ++i) out[i] = velocity_at(points[i], time_s, frame, true);
 }
 
 void WindField::velocities_profile_below(std::span<const Vec3> points, double time_s, std::span<Vec3> out) const {
   if (points.size() != out.size())
     throw InputError(ErrorContext{"wind", time_s, "out", ""},
                      "points.size() (" + std::to_string(points.size()) + ") != out.size() (" + std::to_string(out.size()) + ")");
-  for (std::size_t i = 0; i < points.size(); ++i) out[i] = velocity_at(points[i], time_s, false);
+  const Frame frame = frame_at(time_s);
+  for (std::size_t i = 0; i < points.size(); ++i) out[i] = velocity_at(points[i], time_s, frame, false);
 }
 
 Wind::State Wind::make_state(const Params&) { return State{}; }

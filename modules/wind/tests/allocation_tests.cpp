@@ -32,6 +32,15 @@ TEST_CASE("wind velocity lookups allocate nothing", "[unit][wind]") {
   shear.speed_m_s = 10.0;
   shear.direction_deg = 10.0;
   const WindField profile(shear);
+  WindParams gusty = shear;  // an event turning the inflow (ECD: speed and direction) rebuilds R each call
+  gusty.event.type = WindEventType::ECD;
+  gusty.event.rotor_diameter_m = 126.0;
+  const WindField event(gusty);
+  WindParams from_file = shear;
+  from_file.model = WindModel::uniform_file;
+  from_file.reference_length_m = 126.0;
+  from_file.uniform = parse_uniform_wind("0 10 0 0 0.1 0.2 0.1 0\n5 12 10 0 0.1 0.2 0.1 1\n", "in-memory.hh");
+  const WindField uniform(from_file);
   std::vector<Vec3> points(20, Vec3(1.0, 2.0, 91.0)), out(20);
   allocations = 0;
   counting = true;
@@ -39,6 +48,8 @@ TEST_CASE("wind velocity lookups allocate nothing", "[unit][wind]") {
   for (int k = 0; k < 100; ++k) {
     grid_field.velocities(points, 0.1 * k, out);
     sum += out[0].x() + profile.velocity(Vec3(0, 0, 50.0 + k), 0.1 * k).x();
+    event.velocities(points, 0.1 * k, out);
+    sum += out[0].x() + uniform.velocity(Vec3(0, 0, 50.0 + k), 0.1 * k).x();
   }
   counting = false;
   CHECK(allocations == 0);

@@ -198,3 +198,21 @@ TEST_CASE("generated fields have the IEC Kaimal spectra, intensity and coherence
     }
   }
 }
+
+// Intent: the turbulent EWM (IEC 61400-1 ed. 3 §6.3.2.1, ed. 4 §6.3.3.2): the generator's target is
+// σ1 = 0.11 V_hub (exact, one product), and the u variance generated at the hub, averaged over 200
+// seeds, matches the record's σ² within 4 standard errors measured from the seeds' own spread. The
+// record's σ is below 0.11 V_hub by the Kaimal variance outside [1/T, f_Nyquist] (no ScaleIEC, as
+// TurbSim; 3.7 % here): against 0.11 V_hub itself the tolerance is that deficit plus the statistical
+// one (half the relative variance tolerance). 40 m/s = V_1 of class I, 600 s at 4 Hz; 1 s.
+TEST_CASE("the turbulent EWM generates sigma_1 = 0.11 V_hub at the hub", "[verification][wind][turbulence]") {
+  const verification::EwmHubSigma e = verification::ewm_hub_sigma(200);
+  CHECK(e.iec_sigma_m_s == Approx(0.11 * 40.0).epsilon(1e-15));
+  const double tolerance = 4.0 * e.standard_error_m2_s2;  // 4 standard errors of the mean variance
+  INFO("hub u sigma " << std::sqrt(e.mean_variance_m2_s2) << " m/s; record target " << e.record_sigma_m_s
+                      << " m/s; 0.11 V_hub = " << e.iec_sigma_m_s << " m/s; tolerance on sigma² " << tolerance << " m²/s²");
+  CHECK(std::abs(e.mean_variance_m2_s2 - e.record_sigma_m_s * e.record_sigma_m_s) < tolerance);
+  const double deficit = 1.0 - e.record_sigma_m_s / e.iec_sigma_m_s, statistical = 0.5 * tolerance / e.mean_variance_m2_s2;
+  CHECK(deficit < 0.05);  // the band [1/T, 2 Hz] holds > 90 % of the Kaimal variance at 40 m/s
+  CHECK(std::abs(std::sqrt(e.mean_variance_m2_s2) / e.iec_sigma_m_s - 1.0) < deficit + statistical);
+}

@@ -84,7 +84,8 @@ TEST_CASE("bad wind parameters are rejected with the key", "[unit][wind]") {
   CHECK_THROWS_AS(parse_wind_model("uniform"), InputError);
   CHECK(parse_turbulence_category("C") == TurbulenceCategory::C);
   CHECK(parse_turbulence_model("ETM") == TurbulenceModel::ETM);
-  CHECK_THROWS_WITH(parse_turbulence_model("EWM"), Catch::Contains("NTM, ETM"));
+  CHECK(parse_turbulence_model("EWM") == TurbulenceModel::EWM);
+  CHECK_THROWS_WITH(parse_turbulence_model("EWM50"), Catch::Contains("NTM, ETM, EWM"));
 }
 
 // Intent: the channels are OpenFAST's Wind1VelX/Y/Z at the probe point.

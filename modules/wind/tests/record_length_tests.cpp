@@ -58,3 +58,26 @@ TEST_CASE("a non-periodic box also counts half its width (InflowWind starts it a
   CHECK_THAT(*warning, Catch::Contains("needs 31 s") && Catch::Contains("the run stops where the box ends"));
   CHECK_FALSE(box_length_warning(w, 23.0, 40.0));
 }
+
+// Intent: a uniform wind file shorter than the run, and an event starting at or after its end, are
+// said in the run summary; a file covering the run and an event inside it are not.
+TEST_CASE("uniform files shorter than the run and events after its end are warned of", "[unit][wind]") {
+  WindParams p;
+  p.model = WindModel::uniform_file;
+  p.file = "gust.hh";
+  p.reference_length_m = 126.0;
+  p.uniform = parse_uniform_wind("0 10 0 0 0 0 0 0\n30 12 0 0 0 0 0 0\n", "gust.hh");
+  CHECK_FALSE(box_length_warning(WindField(p), 30.0, 10.0));
+  const auto w = box_length_warning(WindField(p), 60.0, 10.0);
+  REQUIRE(w);
+  CHECK_THAT(*w, Catch::Contains("gust.hh ends at 30 s") && Catch::Contains("last row is held"));
+  WindParams e;
+  e.model = WindModel::steady;
+  e.speed_m_s = 12.0;
+  e.event.type = WindEventType::EDC;
+  e.event.rotor_diameter_m = 126.0;
+  e.event.start_s = 40.0;
+  CHECK_FALSE(event_timing_warning(WindField(e), 60.0));
+  REQUIRE(event_timing_warning(WindField(e), 40.0));
+  CHECK_THAT(*event_timing_warning(WindField(e), 40.0), Catch::Contains("never acts"));
+}

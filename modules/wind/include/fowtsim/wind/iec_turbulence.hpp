@@ -1,23 +1,15 @@
 #pragma once
 // IEC 61400-1 ed. 3 (2005) turbulence model: standard deviations (§6.3), Kaimal spectra and the
-// exponential coherence model (Annex B, eqs. B.1 and B.2). All spectra are one-sided, in Hz.
+// exponential coherence model (Annex B, eqs. B.1 and B.2). All spectra are one-sided, in Hz. The
+// constants (V_ref, I_ref, Λ1, the σ1 of each model) are in iec_conditions.hpp.
+#include "fowtsim/wind/iec_conditions.hpp"
 #include "fowtsim/wind/params.hpp"
 
 namespace fowtsim::wind {
 
-// Reference turbulence intensity I_ref (Table 1): A 0.16, B 0.14, C 0.12.
-double reference_turbulence_intensity(TurbulenceCategory category);
-
-// Reference wind speed V_ref of turbine class I/II/III (Table 1): 50, 42.5, 37.5 m/s.
-double reference_wind_speed(int iec_wind_class);
-
-// Longitudinal standard deviation sigma_1 [m/s] at hub speed v_hub [m/s]:
-//   NTM (eq. 11): sigma_1 = I_ref (0.75 V_hub + b), b = 5.6 m/s
-//   ETM (eq. 19): sigma_1 = c I_ref (0.072 (V_ave/c + 3)(V_hub/c − 4) + 10), c = 2 m/s, V_ave = 0.2 V_ref
+// Longitudinal standard deviation sigma_1 [m/s] at hub speed v_hub [m/s] of the deck's model:
+// ntm_sigma, etm_sigma or ewm_sigma (iec_conditions.hpp).
 double longitudinal_sigma(const TurbulenceParams& turbulence, double v_hub_m_s);
-
-// Turbulence scale parameter Lambda_1 (eq. 5): 0.7 z for z <= 60 m, else 42 m.
-double turbulence_scale_parameter(double hub_height_m);
 
 struct KaimalComponent {
   double sigma_m_s;      // standard deviation sigma_k [m/s]: sigma_1, 0.8 sigma_1, 0.5 sigma_1

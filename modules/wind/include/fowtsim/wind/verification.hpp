@@ -30,6 +30,24 @@ struct PointStatistics {
 // Statistics of grid point (iy, iz) over all nt samples of `grid`.
 PointStatistics grid_point_statistics(const WindGrid& grid, int iy, int iz);
 
+// The IEC 61400-1 events of the wind field against the standard's formulas, transcribed in
+// verification.cpp independently of iec_events.cpp: NREL 5MW (D = 126 m, hub 90 m), class I B,
+// power law 0.2 at V_hub = 12 m/s (ECD: 10 m/s), the event from 5 s, `direction_deg` of yaw
+// misalignment underneath. Largest |v − v_IEC| / V_hub over the hub and the rotor disk's top,
+// bottom, left and right and 401 times over 0–30 s.
+double iec_event_worst_deviation(WindEventType type, int sign, double direction_deg);
+
+// The turbulent EWM at V_hub = 40 m/s (V_1 of class I), 3 × 3 grid of 20 m, 600 s at 4 Hz, over
+// seeds 1…seeds: the hub u variance averaged over the seeds, its standard error (from the seeds'
+// spread), the record's target σ and the IEC σ1 = 0.11 V_hub the generator was given.
+struct EwmHubSigma {
+  double mean_variance_m2_s2 = 0.0;
+  double standard_error_m2_s2 = 0.0;
+  double record_sigma_m_s = 0.0;
+  double iec_sigma_m_s = 0.0;
+};
+EwmHubSigma ewm_hub_sigma(int seeds);
+
 // Largest |field velocity − reference| per component at the fixed inertial point `point_m` over the
 // sample times `time_s`; reference[c] holds component c at those times [m/s]. Throws InputError
 // when a reference column is not as long as the times.

@@ -9,7 +9,10 @@
 // back, v = R v_w, with
 //   R(upflow)    = rotation about +y by −upflow   (u along (cos φ, 0, sin φ): + is up),
 //   R(direction) = rotation about +z by −direction (u along (cos θ, −sin θ, 0)).
-// Below or at the sea surface (wind-frame z <= 0) the steady, power-law and log models return zero.
+// Below or at the sea surface (wind-frame z <= 0) the steady, power-law, log and uniform-file models
+// return zero. An IEC event (iec_events.hpp) adds its turn θ(t) to the direction (the same rotation
+// with direction + θ(t)) and its speed ΔV(y, z, t) along the wind frame's x above the sea surface,
+// as a pure function of time: the field stays stateless.
 #include <memory>
 #include <span>
 #include <vector>
@@ -17,6 +20,7 @@
 #include "fowtsim/core/channels.hpp"
 #include "fowtsim/core/types.hpp"
 #include "fowtsim/wind/full_field.hpp"
+#include "fowtsim/wind/iec_events.hpp"
 #include "fowtsim/wind/params.hpp"
 
 namespace fowtsim::wind {
@@ -27,8 +31,9 @@ double profile_speed(const WindParams& params, double z_m);
 
 class WindField {
  public:
-  // steady/power_law/log: `field` must be null. bts/turbulent: `field` holds the grid (from
-  // io::read_turbsim_bts or generate_turbulence) and is shared read-only. Validates both.
+  // steady/power_law/log/uniform_file: `field` must be null (uniform_file: the rows are in
+  // params.uniform). bts/turbulent: `field` holds the grid (from io::read_turbsim_bts or
+  // generate_turbulence) and is shared read-only. Validates both.
   explicit WindField(WindParams params, std::shared_ptr<const FullField> field = nullptr);
 
   // Velocity [m/s, inertial] at inertial point p [m] and time t [s]. No heap allocation. A point a
@@ -49,9 +54,18 @@ class WindField {
  private:
   WindParams params_;
   std::shared_ptr<const FullField> field_;
-  Mat3 wind_to_inertial_;  // R above
+  Mat3 wind_to_inertial_;  // R above, without an event's turn
   Vec3 reference_point_m_; // (0, 0, z_ref): pivot of the box rotation
-  Vec3 velocity_at(const Vec3& p_m, double time_s, bool count_below) const;
+  WindEvent event_;        // amplitudes of params.event (type none: adds nothing)
+  // What every point shares at one time: the rotation (with the event's turn), the event's ΔV terms
+  // and the uniform file's columns interpolated to the time.
+  struct Frame {
+    Mat3 wind_to_inertial;
+    WindEventValue event;
+    UniformWindRow uniform;
+  };
+  Frame frame_at(double time_s) const;
+  Vec3 velocity_at(const Vec3& p_m, double time_s, const Frame& frame, bool count_below) const;
   mutable long outside_queries_ = 0;  // a diagnostic count: the velocity itself stays a pure function
 };
 
