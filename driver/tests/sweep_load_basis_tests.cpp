@@ -84,9 +84,9 @@ TEST_CASE("load basis: event presets set the IEC wind event and the controller e
   const SweepCase& startup = find("dlc32_ws3_t-10");
   CHECK(override_of(startup, "controller.operating_mode") == "idling");
   CHECK(override_of(startup, "controller.events") == "[{type: startup, at_s: 110}]");
-  // DLC 6.3: the 1-year EWM, V_e1 = 0.8 × 1.4 × 50 = 56 m/s, at the extreme yaw error.
+  // DLC 6.3: the turbulent 1-year EWM, V_1 = 0.8 V_ref = 40 m/s, at the extreme yaw error.
   const SweepCase& parked = find("dlc63_yaw20_s1");
-  CHECK(parked.wind_speed_m_s.value() == Approx(56.0).epsilon(1e-15));
+  CHECK(parked.wind_speed_m_s.value() == Approx(40.0).epsilon(1e-15));
   CHECK(override_of(parked, "wind.direction_deg") == "20");
   // γ_f and analysis types from the table (IEC 61400-1 ed. 4 Table 3).
   const auto group = [&](const std::string& name) -> const LoadCaseGroup& {

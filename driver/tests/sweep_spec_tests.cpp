@@ -135,9 +135,9 @@ load_cases:
   CHECK(cases[0].name == "dlc61_yaw-8_s1");
   CHECK(cases[2].name == "dlc61_yaw0_s1");
   CHECK(cases[5].name == "dlc61_yaw8_s2");
-  // V_e50 = 1.4 V_ref = 70 m/s at hub height for class I, profile exponent 0.11 (IEC 61400-1 ed.3
-  // §6.3.2.1), turbulent with σ1 = 0.11 V_hub (ed. 4 §6.3.3.2: the generator's EWM model).
-  CHECK(cases[0].wind_speed_m_s.value() == 70.0);
+  // The turbulent EWM (IEC 61400-1 ed. 4 §6.3.3.2): 10-minute mean V_50 = V_ref = 50 m/s at hub
+  // height for class I, profile exponent 0.11, σ1 = 0.11 V_hub (the generator's EWM model).
+  CHECK(cases[0].wind_speed_m_s.value() == 50.0);
   CHECK(override_of(cases[0], "wind.model") == "turbulent");
   CHECK(override_of(cases[0], "wind.turbulence.model") == "EWM");
   CHECK(override_of(cases[0], "wind.shear_exponent") == "0.11");

@@ -7,26 +7,13 @@
 #include <fmt/format.h>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/wind/iec_conditions.hpp"
 
 namespace fowtsim::driver::sweep {
 
-double reference_wind_speed_m_s(int wind_class) {
-  constexpr double v_ref[] = {50.0, 42.5, 37.5};
-  return v_ref[std::clamp(wind_class, 1, 3) - 1];
-}
-
-double reference_turbulence_intensity(const std::string& turbulence_class) {
-  if (turbulence_class == "A") return 0.16;
-  if (turbulence_class == "C") return 0.12;
-  return 0.14;
-}
-
 double ntm_sigma_m_s(const std::string& turbulence_class, double hub_speed_m_s) {
-  return reference_turbulence_intensity(turbulence_class) * (0.75 * hub_speed_m_s + 5.6);
+  return wind::ntm_sigma(wind::parse_turbulence_category(turbulence_class), hub_speed_m_s);
 }
-
-double ewm50_hub_speed_m_s(int wind_class) { return 1.4 * reference_wind_speed_m_s(wind_class); }
-double ewm1_hub_speed_m_s(int wind_class) { return 0.8 * ewm50_hub_speed_m_s(wind_class); }
 
 namespace {
 
@@ -54,11 +41,11 @@ const std::vector<PresetInfo> kPresets = {
     {"dlc4.1", "normal shutdown", "NWP, V_in, V_r, V_out", "NSS", "shutdown, fatigue (give events_per_year)", false, true, kFatigue, 1},
     {"dlc4.2", "normal shutdown", "EOG, V_r ± 2, V_out", "NSS", "shutdown at the gust's start, dip and peak", true, false, kN, 1},
     {"dlc5.1", "emergency stop", "NTM, V_r ± 2, V_out", "NSS", "emergency stop (fast pitch, shaft brake)", true, false, kN, kPresetSeeds},
-    {"dlc6.1", "parked (idling)", "turbulent EWM, V_e50", "ESS (50-year)", "yaw −8, 0, +8°", true, false, kN, kPresetSeeds},
-    {"dlc6.2", "parked (idling)", "turbulent EWM, V_e50", "ESS (50-year)", "grid loss: yaw −180 … 150° by 30°", true, false, kA, kPresetSeeds},
-    {"dlc6.3", "parked (idling)", "turbulent EWM, V_e1", "ESS (1-year)", "extreme yaw −20, 0, +20°", true, false, kN, kPresetSeeds},
+    {"dlc6.1", "parked (idling)", "turbulent EWM, V_50 = V_ref", "ESS (50-year)", "yaw −8, 0, +8°", true, false, kN, kPresetSeeds},
+    {"dlc6.2", "parked (idling)", "turbulent EWM, V_50 = V_ref", "ESS (50-year)", "grid loss: yaw −180 … 150° by 30°", true, false, kA, kPresetSeeds},
+    {"dlc6.3", "parked (idling)", "turbulent EWM, V_1 = 0.8 V_ref", "ESS (1-year)", "extreme yaw −20, 0, +20°", true, false, kN, kPresetSeeds},
     {"dlc6.4", "parked (idling)", "NTM, V_hub < 0.7 V_ref", "NSS", "fatigue (give the speeds and the group's time fraction)", false, true, kFatigue, kPresetSeeds},
-    {"dlc7.1", "parked plus fault", "turbulent EWM, V_e1", "ESS (1-year)", "blade 1 seized at fine pitch, yaw −8, 0, +8°", true, false, kA, kPresetSeeds},
+    {"dlc7.1", "parked plus fault", "turbulent EWM, V_1 = 0.8 V_ref", "ESS (1-year)", "blade 1 seized at fine pitch, yaw −8, 0, +8°", true, false, kA, kPresetSeeds},
 };
 
 // Timing of a controller event against a gust (EOG, T = 10.5 s, IEC 61400-1 ed. 4 eq. 17): at
@@ -156,10 +143,12 @@ PresetPlan preset_plan(const std::string& preset, const TurbineClass& turbine, c
     set("wind.event.iec_wind_class", number_text(turbine.wind_class));
     set("wind.event.turbulence_class", turbine.turbulence_class);
   };
-  auto extreme_wind = [&](double speed) {  // turbulent EWM, σ1 = 0.11 V_hub (ed. 4 §6.3.3.2)
+  // Turbulent EWM (ed. 4 §6.3.3.2): 10-minute mean V_50 = V_ref or V_1 = 0.8 V_ref at hub height,
+  // σ1 = 0.11 V_hub, profile exponent 0.11.
+  auto extreme_wind = [&](double speed) {
     turbulent("EWM");
     set("wind.speed_m_s", number_text(speed));
-    set("wind.shear_exponent", number_text(kEwmShearExponent));
+    set("wind.shear_exponent", number_text(wind::kEwmShearExponent));
   };
   // Idling: feathered at the deck's own upper pitch limit (90° for the NREL 5MW), generator off,
   // rotor free (controller.operating_mode: idling), starting at rest.
@@ -236,7 +225,7 @@ PresetPlan preset_plan(const std::string& preset, const TurbineClass& turbine, c
     plan.wind_speeds_m_s = {v_r() - 2.0, v_r() + 2.0, v_out()};
     set("controller.events", events(fmt::format("type: emergency_stop, at_s: {}", event_time_s)), true);
   } else if (name == "dlc6.1" || name == "dlc6.2") {
-    extreme_wind(ewm50_hub_speed_m_s(turbine.wind_class));
+    extreme_wind(wind::ewm_turbulent_50yr_speed(turbine.wind_class));
     idling();
     if (name == "dlc6.1") {
       plan.factors.push_back(yaws({-8.0, 0.0, 8.0}));
@@ -246,14 +235,14 @@ PresetPlan preset_plan(const std::string& preset, const TurbineClass& turbine, c
       plan.factors.push_back(yaws(all));
     }
   } else if (name == "dlc6.3") {
-    extreme_wind(ewm1_hub_speed_m_s(turbine.wind_class));
+    extreme_wind(wind::ewm_turbulent_1yr_speed(turbine.wind_class));
     idling();
     plan.factors.push_back(yaws({-20.0, 0.0, 20.0}));
   } else if (name == "dlc6.4") {
     turbulent("NTM");
     idling();
   } else if (name == "dlc7.1") {
-    extreme_wind(ewm1_hub_speed_m_s(turbine.wind_class));
+    extreme_wind(wind::ewm_turbulent_1yr_speed(turbine.wind_class));
     idling();
     // Seized at fine pitch: blade 1 runs to 0° from the start and stays there.
     set("controller.events", events("type: pitch_runaway, blade: 1, at_s: 0, target_deg: 0"), true);

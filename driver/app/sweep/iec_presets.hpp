@@ -21,18 +21,12 @@ namespace fowtsim::driver::sweep {
 // stochastic realisations per wind-speed bin.
 inline constexpr int kPresetSeeds = 6;
 
-// V_ref of an IEC 61400-1 wind turbine class (ed.3 Table 1): 50, 42.5, 37.5 m/s.
-double reference_wind_speed_m_s(int wind_class);
-// I_ref of a turbulence category (ed.3 Table 1): A 0.16, B 0.14, C 0.12.
-double reference_turbulence_intensity(const std::string& turbulence_class);
-// NTM σ1 = I_ref (0.75 V_hub + b), b = 5.6 m/s (ed.3 §6.3.1.3): the longitudinal standard deviation
-// the turbulence generator draws for a case (shown by --list).
-double ntm_sigma_m_s(const std::string& turbulence_class, double hub_speed_m_s);
-// EWM at hub height, V_e50 = 1.4 V_ref and V_e1 = 0.8 V_e50 (ed.3 §6.3.2.1; its steady profile (z/z_hub)^0.11).
-double ewm50_hub_speed_m_s(int wind_class);
-double ewm1_hub_speed_m_s(int wind_class);
-inline constexpr double kEwmShearExponent = 0.11;  // the EWM profile exponent (ed.3 §6.3.2.1)
+// The IEC numbers (V_ref, I_ref, σ1, the extreme speeds) are the wind module's
+// (fowtsim/wind/iec_conditions.hpp); the normal wind profile's exponent is the presets' own.
 inline constexpr double kNwpShearExponent = 0.2;   // the normal wind profile exponent (ed.3 §6.3.1.2)
+
+// σ1 of the NTM at a hub-height speed for a spec's turbulence class "A", "B" or "C" (--list shows it).
+double ntm_sigma_m_s(const std::string& turbulence_class, double hub_speed_m_s);
 
 // One design load case of the standard, as a preset.
 struct PresetInfo {

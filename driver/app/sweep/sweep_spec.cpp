@@ -224,7 +224,7 @@ LoadCaseGroup read_group(const io::ValidatedDeck& g, const io::DeckNode& raw, Is
     }
   }
 
-  // Parked in the extreme wind: the preset sets the speed (V_e50 or V_e1) and the sea is one extreme sea state.
+  // Parked in the extreme wind: the preset sets the speed (V_50 or V_1) and the sea is one extreme sea state.
   const bool extreme_wind = preset != nullptr && preset->wind.starts_with("turbulent EWM");
   if (extreme_wind && !group.wind_speeds_m_s.empty())
     issues.add(g, "wind_speeds_m_s", "wind speeds", fmt::format("none: {} blows the extreme wind model's speed ({})", group.preset, preset->wind));

@@ -36,15 +36,21 @@ struct NotWritten {
 constexpr NotWritten kNotWritten[] = {
     {R"(ConvIter|ConvError|NumUJac)",
      "OpenFAST's glue-code solver diagnostics (convergence iterations, Jacobian updates): no counterpart in fowtsim"},
-    {R"(TTDsp(FA|SS|Twst)|TwHt\d+(TD|RD|TP)[xyz]t|YawBr(TD|RD|TV|RV|RA)[xyz][pt])",
-     "a tower deflection or tower-top motion relative to the base: needs a flexible tower, and fowtsim's tower is rigid "
-     "(no tower DOF yet)"},
+    {R"(TTDsp(FA|SS))", "the tower-top deflection: written with the flexible tower (structure.tower.flexible: true)"},
+    {R"(TTDspTwst|TwHt\d+(RD[xyz]|TP[xyz]|TDz)t|YawBr(TD|RD|TV|RV|RA)[xyz][pt])",
+     "a tower twist, rotation or axial deflection, or a yaw-bearing deflection or velocity: not computed; the flexible "
+     "tower has bending modes only (fowtsim writes TTDspFA/SS, TwHt<k>TD{x,y}t and YawBrTA{x,y,z}p)"},
+    {R"(TwHt\d+TD[xy]t)", "a tower gauge deflection: written at the heights of structure.tower.gauge_heights_m on the "
+                          "flexible tower"},
     {R"(TwHt\d+[FM]L[xyz]t)",
-     "tower loads at a gage height: not computed; fowtsim writes the tower-base (TwrBs*) and yaw-bearing (YawBr*) loads"},
-    {R"(TwrClrnc\d|TipClrnc\d|B\dN\d+Clrnc)", "blade-to-tower clearance: not computed by fowtsim (its tower is rigid)"},
-    {R"(Spn\d+[FM]L[xyz][bg]\d|Spn\d+(TD|RD)[xyz]b\d)",
-     "ElastoDyn's blade span-gage output: not computed; fowtsim writes the root loads (RootMxb1, B1RootMxr …) and "
-     "the tip deflections"},
+     "tower loads at a gauge height: written at the heights of structure.tower.gauge_heights_m; the tower-base (TwrBs*) "
+     "and yaw-bearing (YawBr*) loads always"},
+    {R"(TwrClrnc\d)", "blade-to-tower clearance: written with rigid and Rayleigh–Ritz blades, not yet with the MBBT blades"},
+    {R"(TipClrnc\d|B\dN\d+Clrnc)", "tip-to-tower clearance along the blade (AeroDyn's): not computed; fowtsim writes TwrClrnc<b>"},
+    {R"(Spn\d+[FM]L[xyz][bg]\d)",
+     "ElastoDyn's blade span gauges: written at the fractions of structure.rotor.rayleigh_ritz_blade_gauges (Rayleigh–Ritz "
+     "blades) or blades.gauges_eta (MBBT blades)"},
+    {R"(Spn\d+(TD|RD)[xyz]b\d)", "ElastoDyn's span-gauge deflections: not computed; fowtsim writes the tip deflections"},
     {R"(LSSGag\w+|LSSTip\w+)",
      "low-speed-shaft gage/tip output: not computed; fowtsim writes LSShftFxa and LSShftMxa"},
     {R"(Ptfm[TR][VA][xyz]t)",
