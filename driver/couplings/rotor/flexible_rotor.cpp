@@ -180,13 +180,13 @@ void FlexibleRotor::start(const ShaftMotion& shaft, double azimuth_rad, double r
 }
 
 // Trapezoidal rule on the linear actuator (A-stable, second order).
-void FlexibleRotor::advance_pitch(double dt, double command, FlexibleRotorState& state) const {
+void FlexibleRotor::advance_pitch(double dt, const std::array<double, 3>& command, FlexibleRotorState& state) const {
   const double w = params_.pitch_natural_frequency_rad_s, z = params_.pitch_damping_ratio;
   Eigen::Matrix2d a;
   a << 0.0, 1.0, -w * w, -2.0 * z * w;
-  const Eigen::Vector2d forcing(0.0, w * w * command);
   const Eigen::Matrix2d lhs_inverse = (Eigen::Matrix2d::Identity() - 0.5 * dt * a).inverse();
   for (int b = 0; b < kBlades; ++b) {
+    const Eigen::Vector2d forcing(0.0, w * w * command[static_cast<std::size_t>(b)]);
     const Eigen::Vector2d x0(state.pitch_rad[b], state.pitch_rate_rad_s[b]);
     const Eigen::Vector2d x1 = lhs_inverse * (x0 + 0.5 * dt * (a * x0) + dt * forcing);
     state.pitch_acceleration_rad_s2[b] = (x1[1] - x0[1]) / dt;

@@ -108,7 +108,7 @@ struct FlexibleRotorState {
 // What the slow side holds over a large step.
 struct RotorDemands {
   double generator_torque_N_m = 0.0;   // HSS
-  double pitch_command_rad = 0.0;      // collective
+  std::array<double, 3> pitch_command_rad{};  // per blade [rad]
   bool gravity = true;
 };
 
@@ -166,7 +166,7 @@ class FlexibleRotor {
   void evaluate_aero(double t, const ShaftMotion& shaft, bool solve_induction, Data& d, RotorAero::Data* aero);
   void step(double t, double dt, const ShaftMotion& shaft, const RotorDemands& demands, bool solve_induction, Data& d,
             RotorAero::Data* aero);
-  void advance_pitch(double dt, double command, FlexibleRotorState& state) const;
+  void advance_pitch(double dt, const std::array<double, 3>& command, FlexibleRotorState& state) const;
   HubLoad root_loads(const ShaftMotion& shaft, const FlexibleRotorState& state) const;
 
   FlexibleRotorParams params_;
