@@ -239,8 +239,10 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   input_warnings_ = sea_->warnings();
   if (rotor_ && rotor_->params().number_of_blades > 0) {
     const wind::WindParams& w = rotor_->wind_params();
-    // NREL 5MW cut-out 25 m/s (the controller has no shutdown): a spinning rotor above it.
-    if (w.speed_m_s > 25.0 && structure_.initial_conditions.rotor_speed_rpm != 0.0)
+    // NREL 5MW cut-out 25 m/s: a rotor spinning above it in operation (idling or parked is the
+    // deck saying it knows).
+    const bool operating = !controller_ || controller_->events().mode == control::OperatingMode::operating;
+    if (w.speed_m_s > 25.0 && structure_.initial_conditions.rotor_speed_rpm != 0.0 && operating)
       input_warnings_.push_back(fmt::format("wind {:.3g} m/s beyond the 25 m/s cut-out with the rotor spinning (the controller "
                                             "does not shut the turbine down)", w.speed_m_s));
   }

@@ -86,7 +86,7 @@ TEST_CASE("shutdown: every blade feathers at the rate exactly; the generator ope
   CHECK(std::isfinite(loop.e.fired_at_s[0]));
   CHECK(loop.e.fired_at_s[0] == 800 * kDt);
   CHECK(theta0 > 0.0);
-  // 1e-14 rad: θ₀ + r Δt rounded once (|θ| ≤ 1.6 rad, ulp 2.2e-16); measured 0 or 2.2e-16.
+  // 1e-14 rad: θ₀ + r Δt rounded once (|θ| ≤ 1.6 rad, ulp 2.2e-16); measured 0 (the same expression).
   CHECK(worst <= 1e-14);
   CHECK(reached_feather);
   CHECK(loop.y.generator_contactor == 0);

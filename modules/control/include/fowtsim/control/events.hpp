@@ -60,7 +60,8 @@ struct EventParams {
 };
 
 // ServoDyn's HSS brake, HSSBrMode 1: the torque ramps linearly from 0 at the engagement time
-// (THSSBrDp) to HSSBrTqF over HSSBrDT. NREL 5MW ServoDyn deck: HSSBrTqF 28116.2 N·m, HSSBrDT 0.6 s.
+// (THSSBrDp) to HSSBrTqF over HSSBrDT. NREL 5MW ServoDyn deck (r-test 5MW_OC3Spar_DLL_WTurb_WavesIrr):
+// HSSBrTqF 28116.2 N·m, HSSBrDT 0.6 s.
 struct BrakeParams {
   double torque_N_m = 28116.2;    // HSSBrTqF: fully deployed brake torque on the HSS [N·m]
   double engage_time_s = 0.6;     // HSSBrDT: time to deploy it fully [s]
