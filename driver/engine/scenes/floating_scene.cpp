@@ -178,19 +178,6 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
     controller_.emplace(std::move(cs));
   }
   if (deck.has("blades")) blades_.emplace(deck, model_, rotor_ ? &*rotor_ : nullptr);
-  if (blades_ && controller_) {  // the brake's stick and slip act on the multibody's drivetrain, not on the MBBT blades' spin
-    const control::EventsParams& e = controller_->events();
-    const auto refuse = [&](const std::string& key) {
-      throw InputError({"floating", std::nullopt, "controller." + key, "rigid or Rayleigh-Ritz blades"},
-                       where(deck, "controller." + key) +
-                           ": the HSS brake is modelled on the multibody drivetrain (rigid or Rayleigh-Ritz blades); with "
-                           "flexible MBBT blades (the `blades` section) it is not yet");
-    };
-    if (e.mode == control::OperatingMode::parked) refuse("operating_mode");
-    for (std::size_t i = 0; i < e.events.size(); ++i)
-      if (e.events[i].type == control::EventType::brake || e.events[i].type == control::EventType::emergency_stop)
-        refuse(fmt::format("events[{}]", i));
-  }
   stage_loads_ = std::make_unique<StageLoads>(model_, *sea_, rotor_ ? &*rotor_ : nullptr, blades_ ? &*blades_ : nullptr,
                                               controller_ ? &controller_->events().brake : nullptr);
   initial_pitch_rad_ = structure_.initial_conditions.blade_pitch_deg * std::numbers::pi / 180.0;
@@ -443,7 +430,14 @@ void FloatingScene::brake_after_step(double t_end, FloatingState& s) {
   HeldDemands& h = s.held;
   if (!controller_) return;
   const double brake = controller_->brake_torque_N_m(*s.controller, t_end);
-  if (h.drivetrain_locked) {
+  if (h.drivetrain_locked && blades_) {
+    // Flexible blades: the lock's torque from the spin's balance in the blades' last small step.
+    const double lock_torque = TurbineBlades::lock_torque_N_m(*s.blades);
+    if (std::abs(lock_torque) > structure_.drivetrain.gearbox_ratio * brake) {
+      h.drivetrain_locked = false;
+      h.brake_direction = lock_torque > 0.0 ? -1.0 : 1.0;
+    }
+  } else if (h.drivetrain_locked) {
     // Stick holds while the torque the lock takes, on the HSS, is within the brake's: evaluated on
     // the row's copies of the sea and rotor data, so the state's warm starts stay as the step left them.
     row_sea_ = s.sea;
@@ -459,8 +453,12 @@ void FloatingScene::brake_after_step(double t_end, FloatingState& s) {
     }
   } else if (h.brake_direction != 0.0 && drivetrain_speed(s.body) * h.brake_direction <= 0.0) {
     // The brake took the shaft through zero within the step: stopped there and held from here.
-    s.body.generator_speed_rad_s = 0.0;
-    if (model_.generator_dof != multibody::kGenerator) s.body.rotor_speed_rad_s = 0.0;
+    if (blades_) {
+      blades_->stop_spin(*s.blades, s.body);
+    } else {
+      s.body.generator_speed_rad_s = 0.0;
+      if (model_.generator_dof != multibody::kGenerator) s.body.rotor_speed_rad_s = 0.0;
+    }
     h.drivetrain_locked = true;
     h.brake_direction = 0.0;
   }
@@ -468,7 +466,7 @@ void FloatingScene::brake_after_step(double t_end, FloatingState& s) {
 
 void FloatingScene::step(double t, double dt, FloatingState& s) {
   RotorAero::Data* aero = s.aero ? &*s.aero : nullptr;
-  if (!blades_) brake_before_step(t, dt, s);
+  brake_before_step(t, dt, s);
   stage_loads_->act_on(s.held, s.sea, aero, s.blades ? &*s.blades : nullptr);
   if (!blades_) {
     stage_loads_->begin_step(t);
@@ -476,11 +474,17 @@ void FloatingScene::step(double t, double dt, FloatingState& s) {
     stage_loads_->end_step();
     if (rotor_) rotor_->advance_states(model_, s.body, t + dt, *aero);  // UA/DBEMT, if on
   } else {
-    blades_->advance(*stage_loads_, [this](double tt, const multibody::State& b) { return shaft_at(tt, b); }, demands(s), t,
-                     dt, s.body, *s.blades, aero);
+    // The blades' spin takes the brake as a generator torque held over the large step (its ramp at
+    // the step's middle: the mean of a linear ramp) while it slips, or as a lock.
+    RotorDemands d = demands(s);
+    d.drivetrain_locked = s.held.drivetrain_locked;
+    if (controller_ && !s.held.drivetrain_locked)
+      d.generator_torque_N_m += s.held.brake_direction * controller_->brake_torque_N_m(*s.controller, t + 0.5 * dt);
+    blades_->advance(*stage_loads_, [this](double tt, const multibody::State& b) { return shaft_at(tt, b); }, d, t, dt,
+                     s.body, *s.blades, aero);
   }
   sea_->advance(t + dt, platform_motion(s.body), s.sea);
-  if (!blades_) brake_after_step(t + dt, s);
+  brake_after_step(t + dt, s);
   s.max_rotor_speed_rad_s = std::max(s.max_rotor_speed_rad_s, std::abs(s.body.rotor_speed_rad_s));
   sample_controller(t + dt, dt, s);
 }
