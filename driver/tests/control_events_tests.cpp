@@ -300,3 +300,31 @@ TEST_CASE("the brake holds and stops flexible MBBT blades", "[verification][run]
   // to 1e-12 on the rigid blades. The stop: 2.44 s (the deployed line: 0.5 + 0.3 + 0.1047/0.0629 = 2.46 s).
   CHECK(std::abs(decel / (kRatio * 28116.2 / drivetrain_inertia()) - 1.0) < 2e-2);
 }
+
+TEST_CASE("a DISCON's contactor and brake records act in a run", "[verification][run]") {
+  // Intent: Bladed records 35/36 from the library: the test DISCON ("+trip") opens its contactor and
+  // applies the shaft brake when the generator speed passes 130 rad/s (1241.4 rpm) — here in the
+  // overspeed after a grid loss with a long protection delay; from that step HSSBrTq follows the
+  // HSSBrMode-1 ramp, and the library's own pitch runs until the delayed shutdown.
+  const io::ChannelTable t = run_turbine("discon_trip", 12.0,
+                                         "  initial_conditions: {rotor_speed_rpm: 12.1, blade_pitch_deg: 10.3}\n"
+                                         "wind: {model: steady, speed_m_s: 15.0, reference_height_m: 90.0}\n"
+                                         "controller:\n  type: discon\n  library: " FOWTSIM_TEST_DISCON "\n"
+                                         "  infile: nrel5mw_land+trip\n"
+                                         "  events:\n    - {type: grid_loss, at_s: 2.0, shutdown_delay_s: 5.0}\n");
+  const auto& time = t.time();
+  const auto& gen = column(t, "GenSpeed");
+  const auto& brake = column(t, "HSSBrTq");
+  const auto& torque = column(t, "GenTq");
+  std::size_t trip = 0;
+  for (std::size_t i = 0; i < t.rows() && trip == 0; ++i)
+    if (gen[i] * kRpm > 130.0) trip = i;
+  REQUIRE(trip > 0);
+  INFO("trip at " << time[trip] << " s");
+  for (std::size_t i = 0; i < t.rows(); ++i) {
+    if (time[i] >= 2.0) CHECK(torque[i] == 0.0);
+    if (i < trip) CHECK(brake[i] == 0.0);
+    else  // the ramp from the trip's step, exact to the rounding of t − t_trip (1e-12 relative)
+      CHECK(brake[i] == Approx(28.1162 * std::min(1.0, (time[i] - time[trip]) / 0.6)).epsilon(1e-12).margin(1e-12));
+  }
+}
