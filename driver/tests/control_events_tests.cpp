@@ -328,3 +328,42 @@ TEST_CASE("a DISCON's contactor and brake records act in a run", "[verification]
       CHECK(brake[i] == Approx(28.1162 * std::min(1.0, (time[i] - time[trip]) / 0.6)).epsilon(1e-12).margin(1e-12));
   }
 }
+
+TEST_CASE("start-up from parked in a run: brake released, pitch down at the rate, generator in at cut-in", "[verification][run]") {
+  // Intent: issue 27's start-up — a parked rotor (feathered, braked) released at 1 s; each blade
+  // comes down from feather at 4°/s exactly until it meets the law's demand; GenTq stays 0 until
+  // GenSpeed reaches VS_CtInSp (670 rpm), then the law's torque; HSSBrTq 0 from the start-up.
+  const io::ChannelTable t = run_turbine("startup", 60.0,
+                                         "  initial_conditions: {rotor_speed_rpm: 0.0}\n"
+                                         "wind: {model: steady, speed_m_s: 12.0, reference_height_m: 90.0}\n"
+                                         "controller:\n  operating_mode: parked\n"
+                                         "  events:\n    - {type: startup, at_s: 1.0, pitch_rate_deg_s: 4.0}\n");
+  const auto& time = t.time();
+  const auto& pitch = column(t, "BldPitch1");
+  const auto& gen = column(t, "GenSpeed");
+  const auto& torque = column(t, "GenTq");
+  const auto& brake = column(t, "HSSBrTq");
+  const auto& speed = column(t, "RotSpeed");
+  const std::size_t start = row_at(t, 1.0);
+  for (std::size_t i = 0; i < start; ++i) {
+    CHECK(speed[i] == 0.0);
+    CHECK(brake[i] == Approx(28.1162).epsilon(1e-12));
+  }
+  double worst = 0.0;
+  bool connected = false, ramp_ended = false;
+  for (std::size_t i = start; i < t.rows(); ++i) {
+    CHECK(brake[i] == 0.0);
+    const double ramp = kFeatherDeg - 4.0 * (time[i] - 1.0);
+    if (!ramp_ended && pitch[i] > ramp + 1e-9) ramp_ended = true;  // the law's demand is above: law in charge
+    if (!ramp_ended) worst = std::max(worst, std::abs(pitch[i] - ramp));
+    if (gen[i] >= 670.0) connected = true;
+    if (!connected) CHECK(torque[i] == 0.0);
+  }
+  INFO("worst deviation from the 4 deg/s ramp " << worst << " deg");
+  CHECK(worst < 1e-12);  // the ramp in closed form (as the shutdown's)
+  CHECK(connected);
+  CHECK(torque.back() > 0.0);
+  CHECK(pitch.back() < 5.0);  // the law below rated or near it at 12 m/s (measured below)
+  INFO("final pitch " << pitch.back() << " deg, rotor " << speed.back() << " rpm");
+  CHECK(speed.back() > 9.0);
+}

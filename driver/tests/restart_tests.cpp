@@ -76,6 +76,13 @@ TEST_CASE("a restart continues control events bit-identically", "[verification][
                 "    - {type: brake, at_s: 3.8}\n"
                 "    - {type: emergency_stop, when: {channel: GenSpeed, above: 1250.0}}\n",
                 "events");
+  // Flexible blades: a brake slipping across the checkpoint (emergency stop at 3.5 s), and a
+  // parked rotor whose drivetrain lock (the spin's) is in the checkpointed blade state.
+  check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml",
+                "controller:\n  events:\n    - {type: emergency_stop, at_s: 3.5}\n", "flexible_events");
+  check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml",
+                "structure: {initial_conditions: {rotor_speed_rpm: 0.0}}\ncontroller: {operating_mode: parked}\n",
+                "flexible_parked");
 }
 
 TEST_CASE("a restart continues the toy oscillators bit-identically (the scheduler's state whole)", "[unit][run]") {
