@@ -148,7 +148,7 @@ EventState make_event_state(const EventsParams& p) {
   s.fired_at_s.fill(EventState::kNever);
   if (p.mode != OperatingMode::operating) {
     s.generator_connected = false;
-    s.manoeuvre = kToFeather;  // a ramp that starts at feather: held there
+    s.manoeuvre = kToFeather;  // a ramp from feather to feather: held there (any rate > 0 does)
     s.manoeuvre_from_rad.fill(p.feather_pitch_rad);
     s.manoeuvre_rate_rad_s = 1.0;
   }

@@ -31,6 +31,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "fowtsim/control/baseline_controller.hpp"
