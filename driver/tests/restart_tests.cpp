@@ -64,6 +64,27 @@ TEST_CASE("a restart continues the turbine with unsteady airfoils and dynamic in
                 "flexible_unsteady_aero");
 }
 
+TEST_CASE("a restart continues control events bit-identically", "[verification][run]") {
+  // Events fired before the 4 s checkpoint (a stuck blade at 1 s, a grid loss at 3 s) and after it
+  // (the grid loss's shutdown at 4.5 s), a brake whose ramp (3.8–4.4 s) spans it, an overspeed
+  // condition watched throughout (GenSpeed peaks at 1239.6 rpm: it does not fire): which fired,
+  // when, the contactor and the brake's engagement are in the checkpointed controller data.
+  check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_steady_15mps.yaml",
+                "structure: {initial_conditions: {blade_pitch_deg: 10.0}}\n"
+                "controller:\n  events:\n    - {type: pitch_stuck, at_s: 1.0, blade: 3}\n"
+                "    - {type: grid_loss, at_s: 3.0, shutdown_delay_s: 1.5}\n"
+                "    - {type: brake, at_s: 3.8}\n"
+                "    - {type: emergency_stop, when: {channel: GenSpeed, above: 1250.0}}\n",
+                "events");
+  // Flexible blades: a brake slipping across the checkpoint (emergency stop at 3.5 s), and a
+  // parked rotor whose drivetrain lock (the spin's) is in the checkpointed blade state.
+  check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml",
+                "controller:\n  events:\n    - {type: emergency_stop, at_s: 3.5}\n", "flexible_events");
+  check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml",
+                "structure: {initial_conditions: {rotor_speed_rpm: 0.0}}\ncontroller: {operating_mode: parked}\n",
+                "flexible_parked");
+}
+
 TEST_CASE("a restart continues the toy oscillators bit-identically (the scheduler's state whole)", "[unit][run]") {
   // Slow and fast states, the held loads, the last frame motion and root loads, the step count.
   check_restart(testing::source_dir() / "inputs/toy_coupled_oscillators.yaml", "", "toy");

@@ -180,13 +180,13 @@ void FlexibleRotor::start(const ShaftMotion& shaft, double azimuth_rad, double r
 }
 
 // Trapezoidal rule on the linear actuator (A-stable, second order).
-void FlexibleRotor::advance_pitch(double dt, double command, FlexibleRotorState& state) const {
+void FlexibleRotor::advance_pitch(double dt, const std::array<double, 3>& command, FlexibleRotorState& state) const {
   const double w = params_.pitch_natural_frequency_rad_s, z = params_.pitch_damping_ratio;
   Eigen::Matrix2d a;
   a << 0.0, 1.0, -w * w, -2.0 * z * w;
-  const Eigen::Vector2d forcing(0.0, w * w * command);
   const Eigen::Matrix2d lhs_inverse = (Eigen::Matrix2d::Identity() - 0.5 * dt * a).inverse();
   for (int b = 0; b < kBlades; ++b) {
+    const Eigen::Vector2d forcing(0.0, w * w * command[static_cast<std::size_t>(b)]);
     const Eigen::Vector2d x0(state.pitch_rad[b], state.pitch_rate_rad_s[b]);
     const Eigen::Vector2d x1 = lhs_inverse * (x0 + 0.5 * dt * (a * x0) + dt * forcing);
     state.pitch_acceleration_rad_s2[b] = (x1[1] - x0[1]) / dt;
@@ -225,6 +225,7 @@ void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const Ro
   const double gravity = demands.gravity ? params_.gravity_m_s2 : 0.0;
   const bool held = params_.spin == SpinMode::held;
   const bool flexible = params_.torsional_flexibility && !held;
+  const bool locked = demands.drivetrain_locked && !held;  // the brake holds the generator: its s keeps θ̈ = 0
 
   evaluate_aero(t, d.shaft, solve_induction, d, aero);  // on the blades at the start of the step
   advance_pitch(dt, demands.pitch_command_rad, d.state);
@@ -272,13 +273,20 @@ void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const Ro
   const double j_g = n * n * j_gen;  // generator inertia on the LSS
   const double t_gen = n * demands.generator_torque_N_m;
   double s_rotor = 0.0, s_generator = 0.0;
+  sp.lock_torque_N_m = 0.0;
   if (held) {
     s_rotor = -sp.rotor_acceleration_rad_s2;  // the spin keeps its speed: ψ̈ = 0
     s_generator = -sp.generator_acceleration_rad_s2;
   } else if (!flexible) {
     const double j = j_h + j_g;
-    s_rotor = (tau0 - t_gen - j * sp.rotor_acceleration_rad_s2 - (j_h + n * j_gen) * e_alpha) /
-              (j * (1.0 - am) - tau1);
+    const double lhs = j * (1.0 - am) - tau1;
+    const double rhs = tau0 - t_gen - j * sp.rotor_acceleration_rad_s2 - (j_h + n * j_gen) * e_alpha;
+    if (locked) {  // lhs s = rhs + r with s = −a0: r is the lock's torque
+      s_rotor = -sp.rotor_acceleration_rad_s2;
+      sp.lock_torque_N_m = lhs * s_rotor - rhs;
+    } else {
+      s_rotor = rhs / lhs;
+    }
     s_generator = s_rotor;
   } else {
     const double k = params_.torsional_stiffness_N_m_rad, c = params_.torsional_damping_N_m_s_rad;
@@ -289,9 +297,15 @@ void FlexibleRotor::step(double t, double dt, const ShaftMotion& shaft, const Ro
     m << j_h * (1.0 - am) - tau1 + kappa, -kappa, -kappa, j_g * (1.0 - am) + kappa;
     const Eigen::Vector2d r(tau0 - shaft0 - j_h * sp.rotor_acceleration_rad_s2 - j_h * e_alpha,
                             shaft0 - t_gen - j_g * sp.generator_acceleration_rad_s2 - n * j_gen * e_alpha);
-    const Eigen::Vector2d s = m.partialPivLu().solve(r);
-    s_rotor = s[0];
-    s_generator = s[1];
+    if (locked) {  // the generator's row takes the lock's torque; the rotor's balance holds as it is
+      s_generator = -sp.generator_acceleration_rad_s2;
+      s_rotor = (r[0] - m(0, 1) * s_generator) / m(0, 0);
+      sp.lock_torque_N_m = m(1, 0) * s_rotor + m(1, 1) * s_generator - r[1];
+    } else {
+      const Eigen::Vector2d s = m.partialPivLu().solve(r);
+      s_rotor = s[0];
+      s_generator = s[1];
+    }
   }
   if (!std::isfinite(s_rotor) || !std::isfinite(s_generator))
     throw NumericalError({"rotor", t + dt, "rotor spin acceleration", "reduce the blade time step"},

@@ -94,6 +94,9 @@ struct SpinState {
   double generator_azimuth_rad = 0.0, generator_speed_rad_s = 0.0, generator_acceleration_rad_s2 = 0.0;
   double rotor_mean_acceleration_rad_s2 = 0.0;      // (ψ̇1 − ψ̇0)/Δt of the last small step
   double generator_mean_acceleration_rad_s2 = 0.0;
+  // With RotorDemands::drivetrain_locked: the torque the lock took in the last small step's balance,
+  // on the generator (LSS side; the rotor's with a rigid shaft) [N·m]; 0 otherwise.
+  double lock_torque_N_m = 0.0;
 };
 
 // Everything the fast side integrates: plain, copyable (a copy continues bit-identically: each
@@ -108,7 +111,8 @@ struct FlexibleRotorState {
 // What the slow side holds over a large step.
 struct RotorDemands {
   double generator_torque_N_m = 0.0;   // HSS
-  double pitch_command_rad = 0.0;      // collective
+  std::array<double, 3> pitch_command_rad{};  // per blade [rad]
+  bool drivetrain_locked = false;              // an HSS brake holds the generator (a rigid shaft: the rotor) at rest
   bool gravity = true;
 };
 
@@ -166,7 +170,7 @@ class FlexibleRotor {
   void evaluate_aero(double t, const ShaftMotion& shaft, bool solve_induction, Data& d, RotorAero::Data* aero);
   void step(double t, double dt, const ShaftMotion& shaft, const RotorDemands& demands, bool solve_induction, Data& d,
             RotorAero::Data* aero);
-  void advance_pitch(double dt, double command, FlexibleRotorState& state) const;
+  void advance_pitch(double dt, const std::array<double, 3>& command, FlexibleRotorState& state) const;
   HubLoad root_loads(const ShaftMotion& shaft, const FlexibleRotorState& state) const;
 
   FlexibleRotorParams params_;

@@ -1,5 +1,6 @@
 #include "rotor/rotor_aero.hpp"
 
+#include <algorithm>
 #include <numbers>
 
 #include "fowtsim/io/turbsim_bts.hpp"
@@ -91,9 +92,20 @@ void RotorAero::tower_drag(double t, const multibody::Model& model, const multib
     out.tower_loads[static_cast<std::size_t>(out.tower_load_count++)] = {params_.tower[i].elevation_m - base_elevation, w.force[i]};
 }
 
-void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad,
-                         Data& d, aero::Induction induction) const {
-  aero::place_rigid_rotor(params_, hub_frame_rotor_, 0.0, 0.0, pitch_rad, d.local);
+void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s,
+                         std::span<const double> pitch_rad, Data& d, aero::Induction induction) const {
+  // A collective pitch goes into the placement as before; blades at different pitches (a pitch
+  // fault) are placed unpitched and each node turned by its blade's pitch about the span axis z,
+  // which commutes with the twist's turn: R_z(−twist) R_z(−pitch) = R_z(−(twist + pitch)).
+  const int nn = aero::nodes_per_blade(params_);
+  const double first = pitch_rad.empty() ? 0.0 : pitch_rad[0];
+  const bool collective = std::all_of(pitch_rad.begin(), pitch_rad.end(), [&](double p) { return p == first; });
+  aero::place_rigid_rotor(params_, hub_frame_rotor_, 0.0, 0.0, collective ? first : 0.0, d.local);
+  if (!collective)
+    for (std::size_t k = 0; k < d.points.size(); ++k) {
+      const double p = pitch_rad[k / static_cast<std::size_t>(nn)];
+      d.local.node_orientation[k] = d.local.node_orientation[k] * rotation_z(-p);
+    }
   const Mat3& t_gh = chain.rotor.orientation;
   const Vec3& apex = chain.apex.position_m;
   const Vec3& omega = chain.rotor.angular_velocity_rad_s;
@@ -101,7 +113,7 @@ void RotorAero::evaluate(double t, const multibody::ChainKinematics& chain, doub
   in.hub_position_m = apex;
   in.hub_orientation = t_gh;
   in.rotor_speed_rad_s = rotor_speed_rad_s;
-  in.blade_pitch_rad.setConstant(pitch_rad);
+  for (Eigen::Index b = 0; b < in.blade_pitch_rad.size(); ++b) in.blade_pitch_rad[b] = pitch_rad[static_cast<std::size_t>(b)];
   in.time_s = t;
   in.tower_base_position_m = multibody::tower_axis_at_sea_level(chain);
   in.tower_axis = chain.base.orientation.col(2);
@@ -193,7 +205,7 @@ void RotorAero::advance_states(const multibody::Model& model, const multibody::S
   multibody::chain_kinematics(model, end, d.chain);
   const aero::Induction induction = d.unsteady.started ? aero::Induction::held : aero::Induction::solve;
   if (model.rr_blades.mode_count > 0) evaluate_rayleigh_ritz(t_end, model, end, d.chain, d, nullptr, induction);
-  else evaluate(t_end, d.chain, end.rotor_speed_rad_s, end.blade_pitch_rad[0], d, induction);
+  else evaluate(t_end, d.chain, end.rotor_speed_rad_s, {end.blade_pitch_rad.data(), static_cast<std::size_t>(params_.number_of_blades)}, d, induction);
   if (!d.unsteady.started) {
     aero::start_states(params_, d.input, d.output, t_end, d.unsteady);
     return;

@@ -49,9 +49,10 @@ class RotorAero {
             WindSetUp setup = WindSetUp::run);
   Data make_data() const;
 
-  // Loads at time t on the rotor in the chain configuration `chain`, blade pitch `pitch_rad`:
-  // force at the apex and moment about it, inertial frame [N, N·m], into d.force_N, d.moment_N_m.
-  void evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, double pitch_rad, Data& d,
+  // Loads at time t on the rotor in the chain configuration `chain`, blade pitch `pitch_rad` (one
+  // per blade): force at the apex and moment about it, inertial frame [N, N·m], into d.force_N,
+  // d.moment_N_m.
+  void evaluate(double t, const multibody::ChainKinematics& chain, double rotor_speed_rad_s, std::span<const double> pitch_rad, Data& d,
                 aero::Induction induction = aero::Induction::solve) const;
   // Rayleigh–Ritz blades (the model's stations are the aero nodes' spans, then the tip): every node
   // on its deflected station — position, airfoil frame turned by the section's elastic rotation,

@@ -1,6 +1,8 @@
 #include "decks/controller_deck.hpp"
 
 #include <filesystem>
+#include <numbers>
+#include <optional>
 
 #include "decks/deck_helpers.hpp"
 #include "decks/deck_section.hpp"
@@ -14,13 +16,73 @@ using control::ExternalSettings;
 
 namespace {
 
-// What the section fills: the type, and the parameters of either controller.
+// One `events` item as written: angles in degrees, speeds in the channel's rpm.
+struct WhenDeck {
+  std::string channel;
+  double above = 0.0;
+};
+struct EventDeck {
+  std::string type;
+  std::optional<double> at_s;
+  std::optional<WhenDeck> when;
+  std::optional<double> pitch_rate_deg_s;
+  std::optional<int> blade;
+  std::optional<double> target_deg;
+  double shutdown_delay_s = 0.2;
+};
+
+// What the section fills: the type, the parameters of either controller, and the events.
 struct ControllerDeck {
   std::string type;
   BaselineParams baseline;
   ExternalSettings external;
   bool has_library = false;
+  std::string operating_mode;
+  std::optional<std::vector<EventDeck>> events;
+  control::BrakeParams brake;
 };
+
+DeckSection<WhenDeck> when_section() {
+  DeckSection<WhenDeck> s;
+  s.key("channel", Schema::choice({"GenSpeed", "RotSpeed"}).doc("the measured speed the condition watches"), &WhenDeck::channel)
+      .key("above", Schema::number().doc("fires the first large step the channel exceeds this, in the channel's unit (rpm)"),
+           &WhenDeck::above);
+  return s;
+}
+
+DeckSection<EventDeck> event_section() {
+  DeckSection<EventDeck> s;
+  s.key("type", Schema::choice({"shutdown", "emergency_stop", "grid_loss", "brake", "pitch_runaway", "pitch_stuck", "startup"})
+                    .doc("what happens (modules/control/README.md, \"Control and fault events\")"),
+        &EventDeck::type)
+      .key("at_s", Schema::number().at_least(0.0).optional().doc("time of the event (or `when`)"), &EventDeck::at_s)
+      .section("when", when_section(), &EventDeck::when, true, "condition of the event (or `at_s`); fires once")
+      .key("pitch_rate_deg_s", Schema::number().greater_than(0.0).optional().doc(
+               "pitch rate of shutdown, emergency_stop, grid_loss's shutdown, startup, pitch_runaway; default the "
+               "controller's max_pitch_rate_rad_s (NREL 5MW: 8 deg/s)"),
+           &EventDeck::pitch_rate_deg_s)
+      .key("blade", Schema::integer().at_least(1).at_most(3).optional().doc("the faulty blade (pitch_runaway, pitch_stuck)"),
+           &EventDeck::blade)
+      .key("target_deg", Schema::number().at_least(-90.0).at_most(90.0).optional().doc(
+               "pitch_runaway's end pitch; default the controller's min_pitch_rad (a runaway to fine pitch)"),
+           &EventDeck::target_deg)
+      .key("shutdown_delay_s", Schema::number().at_least(0.0).default_value(0.2).doc(
+               "grid_loss: time from the loss to the pitch-to-feather manoeuvre (protection reaction)"),
+           &EventDeck::shutdown_delay_s);
+  return s;
+}
+
+DeckSection<control::BrakeParams> brake_section() {
+  const control::BrakeParams d{};
+  DeckSection<control::BrakeParams> s;
+  s.key("torque_N_m", Schema::number().at_least(0.0).default_value(d.torque_N_m).doc(
+            "fully deployed HSS brake torque (ServoDyn HSSBrTqF; NREL 5MW 28116.2)"),
+        &control::BrakeParams::torque_N_m)
+      .key("engage_time_s", Schema::number().at_least(0.0).default_value(d.engage_time_s).doc(
+               "time for the brake torque to ramp from 0 to full (ServoDyn HSSBrDT, HSSBrMode 1)"),
+           &control::BrakeParams::engage_time_s);
+  return s;
+}
 
 // A key of the built-in law: BaselineParams::*field, its default the land-based NREL 5MW value.
 using BaselineField = double BaselineParams::*;
@@ -96,6 +158,12 @@ const DeckSection<ControllerDeck>& controller_section() {
              [](ControllerDeck& c) -> std::string& { return c.external.procedure; })
         .key("infile", Schema::string().default_value("").doc("the controller's own input file, passed through (type discon)"),
              [](ControllerDeck& c) -> std::string& { return c.external.infile; });
+    s.key("operating_mode", Schema::choice({"operating", "idling", "parked"}).default_value("operating").doc(
+              "initial mode: the law in charge; idling (pitch at feather, generator off, rotor free); parked (idling + brake on)"),
+          &ControllerDeck::operating_mode)
+        .list("events", event_section(), &ControllerDeck::events, 0,
+              "control and fault events, each at a time (`at_s`) or on a condition (`when`)");
+    s.section("brake", brake_section(), &ControllerDeck::brake, true, "the high-speed-shaft brake");
     return s;
   }();
   return section;
@@ -105,24 +173,82 @@ const DeckSection<ControllerDeck>& controller_section() {
 
 Schema controller_schema() { return controller_section().schema(); }
 
-ControllerParams controller_params(const io::ValidatedDeck& c) {
-  try {
-    ControllerDeck deck;
-    controller_section().read_into(c, deck);
-    if (deck.type == "discon") {
-      if (deck.baseline.generator != control::GeneratorLaw::baseline || deck.baseline.pitch != control::PitchLaw::baseline)
-        throw InputError({"control", std::nullopt, "controller.type", "generator and pitch choose built-in laws: use type baseline"},
-                         "type discon runs the library's own laws; `generator`/`pitch` apply to the built-in controller only");
-      if (!deck.has_library)
-        throw InputError({"control", std::nullopt, "controller.library", "a DISCON library path"}, "type discon needs `library`");
-      return control::ExternalController::make_params(deck.external);
+namespace {
+
+// The events of the deck in SI, defaults from the law (controller_deck.hpp).
+control::EventsParams events_of(const io::ValidatedDeck& c, const ControllerDeck& deck) {
+  constexpr double kRad = std::numbers::pi / 180.0, kRadPerRpm = std::numbers::pi / 30.0;
+  const bool discon = deck.type == "discon";
+  const double rate = discon ? deck.external.max_pitch_rate_rad_s : deck.baseline.max_pitch_rate_rad_s;
+  const double min_pitch = discon ? deck.external.min_pitch_rad : deck.baseline.min_pitch_rad;
+  control::EventsParams p;
+  p.mode = control::operating_mode_from_name(deck.operating_mode);
+  p.brake = deck.brake;
+  p.feather_pitch_rad = discon ? deck.external.max_pitch_rad : deck.baseline.max_pitch_rad;
+  p.cut_in_speed_rad_s = deck.baseline.cut_in_speed_rad_s;  // a DISCON's: the 5MW's VS_CtInSp (the key's default)
+  if (!deck.events) return p;
+  for (std::size_t i = 0; i < deck.events->size(); ++i) {
+    const EventDeck& d = (*deck.events)[i];
+    const std::string key = fmt::format("events[{}]", i);
+    control::EventParams e;
+    e.type = control::event_type_from_name(d.type);
+    if (d.at_s.has_value() == d.when.has_value())
+      throw InputError({"control", std::nullopt, "controller." + key, "either at_s or when"},
+                       where(c, key) + ": give exactly one of `at_s` (a time) and `when` (a condition)");
+    const bool fault = e.type == control::EventType::pitch_runaway || e.type == control::EventType::pitch_stuck;
+    if (fault != d.blade.has_value())
+      throw InputError({"control", std::nullopt, "controller." + key + ".blade", "a blade exactly for pitch faults"},
+                       where(c, key) + (fault ? ": a pitch fault needs `blade` (1..3)" : ": `blade` applies to pitch faults only"));
+    if (d.target_deg && e.type != control::EventType::pitch_runaway)
+      throw InputError({"control", std::nullopt, "controller." + key + ".target_deg", "pitch_runaway"},
+                       where(c, key + ".target_deg") + ": `target_deg` applies to pitch_runaway only");
+    if (d.at_s) {
+      e.at_s = *d.at_s;
+    } else {
+      e.channel = control::trigger_channel_from_name(d.when->channel);
+      e.above = d.when->above * kRadPerRpm;
     }
-    // A law's keys without the law (or the reverse) is a deck mistake, not something to ignore.
-    if ((deck.baseline.generator == control::GeneratorLaw::simple_vs) != c.has("simple_vs"))
-      throw InputError({"control", std::nullopt, "controller.simple_vs", "give `simple_vs` exactly when generator is simple_vs"},
-                       c.has("simple_vs") ? "`simple_vs` given but generator is baseline" : "generator simple_vs needs the `simple_vs` section");
-    control::validate(deck.baseline);
-    return deck.baseline;
+    e.pitch_rate_rad_s = d.pitch_rate_deg_s ? *d.pitch_rate_deg_s * kRad : rate;
+    e.blade = d.blade ? *d.blade - 1 : 0;
+    e.target_pitch_rad = d.target_deg ? *d.target_deg * kRad : min_pitch;
+    e.shutdown_delay_s = d.shutdown_delay_s;
+    p.events.push_back(e);
+  }
+  return p;
+}
+
+ControllerParams law_of(const io::ValidatedDeck& c, const ControllerDeck& deck) {
+  if (deck.type == "discon") {
+    if (deck.baseline.generator != control::GeneratorLaw::baseline || deck.baseline.pitch != control::PitchLaw::baseline)
+      throw InputError({"control", std::nullopt, "controller.type", "generator and pitch choose built-in laws: use type baseline"},
+                       "type discon runs the library's own laws; `generator`/`pitch` apply to the built-in controller only");
+    if (!deck.has_library)
+      throw InputError({"control", std::nullopt, "controller.library", "a DISCON library path"}, "type discon needs `library`");
+    return control::ExternalController::make_params(deck.external);
+  }
+  // A law's keys without the law (or the reverse) is a deck mistake, not something to ignore.
+  if ((deck.baseline.generator == control::GeneratorLaw::simple_vs) != c.has("simple_vs"))
+    throw InputError({"control", std::nullopt, "controller.simple_vs", "give `simple_vs` exactly when generator is simple_vs"},
+                     c.has("simple_vs") ? "`simple_vs` given but generator is baseline" : "generator simple_vs needs the `simple_vs` section");
+  control::validate(deck.baseline);
+  return deck.baseline;
+}
+
+}  // namespace
+
+ControllerParams controller_params(const io::ValidatedDeck& c) { return controller_setup(c).law; }
+
+ControllerSetup controller_setup(const io::ValidatedDeck& c) {
+  ControllerDeck deck;
+  try {
+    controller_section().read_into(c, deck);
+  } catch (const InputError& e) {
+    rethrow_located(c, e);
+  }
+  control::EventsParams events = events_of(c, deck);  // located at their own keys
+  try {
+    control::validate(events);
+    return {law_of(c, deck), std::move(events)};
   } catch (const InputError& e) {
     rethrow_located(c, e);
   }

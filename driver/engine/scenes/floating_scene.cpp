@@ -45,8 +45,9 @@ FrameMotion platform_motion(const multibody::State& s) {
 // of one state that act_on() names (a step's state, or a row's copies).
 class FloatingScene::StageLoads final : public multibody::LoadProvider {
  public:
-  StageLoads(const multibody::Model& model, const SeaModules& sea, const RotorAero* rotor, const TurbineBlades* blades)
-      : model_(model), sea_(sea), rotor_(rotor), blades_(blades) {
+  StageLoads(const multibody::Model& model, const SeaModules& sea, const RotorAero* rotor, const TurbineBlades* blades,
+             const control::BrakeParams* brake)
+      : model_(model), sea_(sea), rotor_(rotor), blades_(blades), brake_(brake) {
     if (rotor_) tower_ = rotor_->make_tower_workspace();
   }
   void act_on(const HeldDemands& held, SeaModules::Data& sea, RotorAero::Data* aero, const TurbineBlades::Data* blades) {
@@ -62,6 +63,11 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
     out.platform_moment_N_m += load.tail<3>();
     out.platform_added_mass = sea_.added_mass(*sea_data_);
     out.generator_torque_N_m = held_->generator_torque_N_m;
+    if (brake_) {  // the HSS brake at this instant of its ramp: holding the shaft, or slipping against it
+      out.drivetrain_locked = held_->drivetrain_locked;
+      if (!held_->drivetrain_locked)
+        out.generator_torque_N_m += held_->brake_direction * control::brake_torque_N_m(*brake_, held_->brake_engaged_at_s, t);
+    }
     if (blades_ || rotor_) multibody::chain_kinematics(model_, s, chain_);
     if (blades_) {  // flexible blades: their held root loads, aerodynamics included
       blades_->add_stage_loads(chain_, *blades_data_, out);
@@ -92,6 +98,7 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
   const SeaModules& sea_;
   const RotorAero* rotor_;
   const TurbineBlades* blades_;
+  const control::BrakeParams* brake_;  // null without a controller
   const HeldDemands* held_ = nullptr;
   SeaModules::Data* sea_data_ = nullptr;
   RotorAero::Data* aero_data_ = nullptr;
@@ -165,14 +172,18 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
                                                                      tip, structure_.rotor.tip_radius_m));
   }
   if (deck.has("controller")) {
-    ControllerParams cp = controller_params(deck.section("controller"));
-    if (const auto* b = std::get_if<control::BaselineParams>(&cp))
+    ControllerSetup cs = controller_setup(deck.section("controller"));
+    if (const auto* b = std::get_if<control::BaselineParams>(&cs.law))
       overspeed_rad_s_ = 1.3 * control::rated_speed_of_law_rad_s(*b) / structure_.drivetrain.gearbox_ratio;
-    controller_.emplace(std::move(cp));
+    controller_.emplace(std::move(cs));
   }
   if (deck.has("blades")) blades_.emplace(deck, model_, rotor_ ? &*rotor_ : nullptr);
-  stage_loads_ = std::make_unique<StageLoads>(model_, *sea_, rotor_ ? &*rotor_ : nullptr, blades_ ? &*blades_ : nullptr);
+  stage_loads_ = std::make_unique<StageLoads>(model_, *sea_, rotor_ ? &*rotor_ : nullptr, blades_ ? &*blades_ : nullptr,
+                                              controller_ ? &controller_->events().brake : nullptr);
   initial_pitch_rad_ = structure_.initial_conditions.blade_pitch_deg * std::numbers::pi / 180.0;
+  // An idling or parked rotor starts with its blades at feather.
+  if (controller_ && controller_->events().mode != control::OperatingMode::operating)
+    initial_pitch_rad_ = controller_->events().feather_pitch_rad;
 
   // Channels in module order; the controller's GenSpeed comes from the multibody.
   auto add_block = [&](Block& block, const std::vector<ChannelInfo>& channels) {
@@ -200,11 +211,14 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
       controller_source_.push_back(k);
     }
     add_block(controller_block_, kept);
+    add_block(brake_block_, {{"HSSBrTq", "kN-m",
+                              "high-speed-shaft brake torque (ServoDyn's HSSBrTq): the brake's ramp, its capacity while it holds the shaft",
+                              "control"}});
   }
   picked_ = select_channels(deck, all_, "floating");
   for (std::size_t i : picked_) {
     written_.push_back(all_[i]);
-    for (Block* b : {&body_block_, &sea_block_, &rotor_block_, &blades_block_, &pitch_block_, &controller_block_})
+    for (Block* b : {&body_block_, &sea_block_, &rotor_block_, &blades_block_, &pitch_block_, &controller_block_, &brake_block_})
       if (i >= b->first && i < b->first + b->count) b->written = true;
   }
   values_.assign(all_.size(), 0.0);
@@ -212,8 +226,10 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   input_warnings_ = sea_->warnings();
   if (rotor_ && rotor_->params().number_of_blades > 0) {
     const wind::WindParams& w = rotor_->wind_params();
-    // NREL 5MW cut-out 25 m/s (the controller has no shutdown): a spinning rotor above it.
-    if (w.speed_m_s > 25.0 && structure_.initial_conditions.rotor_speed_rpm != 0.0)
+    // NREL 5MW cut-out 25 m/s: a rotor spinning above it in operation (idling or parked is the
+    // deck saying it knows).
+    const bool operating = !controller_ || controller_->events().mode == control::OperatingMode::operating;
+    if (w.speed_m_s > 25.0 && structure_.initial_conditions.rotor_speed_rpm != 0.0 && operating)
       input_warnings_.push_back(fmt::format("wind {:.3g} m/s beyond the 25 m/s cut-out with the rotor spinning (the controller "
                                             "does not shut the turbine down)", w.speed_m_s));
   }
@@ -358,7 +374,7 @@ RotorDemands FloatingScene::demands(const FloatingState& s) const {
 FloatingState FloatingScene::make_state() {
   FloatingState s;
   s.body = multibody::Multibody::make_state(model_);
-  s.held = {0.0, initial_pitch_rad_};
+  s.held.pitch_rad.fill(initial_pitch_rad_);
   s.body.blade_pitch_rad.fill(initial_pitch_rad_);
   if (controller_) s.controller = controller_->make_data();
   s.sea = sea_->initial_data();
@@ -383,15 +399,74 @@ void FloatingScene::sample_controller(double t, double dt, FloatingState& s) con
   control::ControllerInput u;
   u.generator_speed_rad_s = structure_.drivetrain.gearbox_ratio * s.body.generator_speed_rad_s;
   u.rotor_speed_rad_s = s.body.rotor_speed_rad_s;
-  u.blade_pitch_rad.fill(s.held.pitch_rad);
+  u.blade_pitch_rad = s.held.pitch_rad;  // each blade's held demand (the measured pitch of a rigid actuator)
   if (rotor_) u.hub_wind_speed_m_s = rotor_->probe_wind(t).x();
   controller_->advance(u, t, dt, *s.controller);
-  s.held = {s.controller->output.generator_torque_N_m, s.controller->output.blade_pitch_rad[0]};
-  s.body.blade_pitch_rad.fill(s.held.pitch_rad);  // the structure's blades turn to it at once (rigid pitch actuator)
+  s.held.generator_torque_N_m = s.controller->output.generator_torque_N_m;
+  s.held.pitch_rad = s.controller->output.blade_pitch_rad;
+  s.held.brake_engaged_at_s = s.controller->events.brake_engaged_at_s;
+  for (std::size_t b = 0; b < s.held.pitch_rad.size(); ++b)
+    s.body.blade_pitch_rad[b] = s.held.pitch_rad[b];  // the structure's blades turn to it at once (rigid pitch actuator)
+}
+
+double& FloatingScene::drivetrain_speed(multibody::State& body) const {
+  return model_.generator_dof == multibody::kGenerator ? body.generator_speed_rad_s : body.rotor_speed_rad_s;
+}
+
+void FloatingScene::brake_before_step(double t, double dt, FloatingState& s) const {
+  HeldDemands& h = s.held;
+  if (!controller_ || controller_->brake_torque_N_m(*s.controller, t + dt) <= 0.0) {  // released, or not yet acting
+    h.drivetrain_locked = false;
+    h.brake_direction = 0.0;
+    return;
+  }
+  if (h.drivetrain_locked) return;
+  const double w = drivetrain_speed(s.body);
+  if (w != 0.0) h.brake_direction = w > 0.0 ? 1.0 : -1.0;
+  else if (h.brake_direction == 0.0) h.drivetrain_locked = true;  // at rest: held, unless the check after the step frees it
+}
+
+void FloatingScene::brake_after_step(double t_end, FloatingState& s) {
+  HeldDemands& h = s.held;
+  if (!controller_) return;
+  const double brake = controller_->brake_torque_N_m(*s.controller, t_end);
+  if (h.drivetrain_locked && blades_) {
+    // Flexible blades: the lock's torque from the spin's balance in the blades' last small step.
+    const double lock_torque = TurbineBlades::lock_torque_N_m(*s.blades);
+    if (std::abs(lock_torque) > structure_.drivetrain.gearbox_ratio * brake) {
+      h.drivetrain_locked = false;
+      h.brake_direction = lock_torque > 0.0 ? -1.0 : 1.0;
+    }
+  } else if (h.drivetrain_locked) {
+    // Stick holds while the torque the lock takes, on the HSS, is within the brake's: evaluated on
+    // the row's copies of the sea and rotor data, so the state's warm starts stay as the step left them.
+    row_sea_ = s.sea;
+    if (rotor_ && !blades_) *row_aero_ = *s.aero;
+    stage_loads_->act_on(h, row_sea_, row_aero_ ? &*row_aero_ : nullptr, s.blades ? &*s.blades : nullptr);
+    multibody::AppliedLoads loads;
+    stage_loads_->loads(t_end, s.body, loads);
+    multibody::evaluate(model_, s.body, loads, t_end, evaluation_);
+    const double lock_torque = evaluation_.drivetrain_lock_torque_N_m;  // LSS side of the generator's DOF
+    if (std::abs(lock_torque) > structure_.drivetrain.gearbox_ratio * brake) {
+      h.drivetrain_locked = false;
+      h.brake_direction = lock_torque > 0.0 ? -1.0 : 1.0;  // it slips the way the drive turns it; the brake opposes that
+    }
+  } else if (h.brake_direction != 0.0 && drivetrain_speed(s.body) * h.brake_direction <= 0.0) {
+    // The brake took the shaft through zero within the step: stopped there and held from here.
+    if (blades_) {
+      blades_->stop_spin(*s.blades, s.body);
+    } else {
+      s.body.generator_speed_rad_s = 0.0;
+      if (model_.generator_dof != multibody::kGenerator) s.body.rotor_speed_rad_s = 0.0;
+    }
+    h.drivetrain_locked = true;
+    h.brake_direction = 0.0;
+  }
 }
 
 void FloatingScene::step(double t, double dt, FloatingState& s) {
   RotorAero::Data* aero = s.aero ? &*s.aero : nullptr;
+  brake_before_step(t, dt, s);
   stage_loads_->act_on(s.held, s.sea, aero, s.blades ? &*s.blades : nullptr);
   if (!blades_) {
     stage_loads_->begin_step(t);
@@ -399,10 +474,17 @@ void FloatingScene::step(double t, double dt, FloatingState& s) {
     stage_loads_->end_step();
     if (rotor_) rotor_->advance_states(model_, s.body, t + dt, *aero);  // UA/DBEMT, if on
   } else {
-    blades_->advance(*stage_loads_, [this](double tt, const multibody::State& b) { return shaft_at(tt, b); }, demands(s), t,
-                     dt, s.body, *s.blades, aero);
+    // The blades' spin takes the brake as a generator torque held over the large step (its ramp at
+    // the step's middle: the mean of a linear ramp) while it slips, or as a lock.
+    RotorDemands d = demands(s);
+    d.drivetrain_locked = s.held.drivetrain_locked;
+    if (controller_ && !s.held.drivetrain_locked)
+      d.generator_torque_N_m += s.held.brake_direction * controller_->brake_torque_N_m(*s.controller, t + 0.5 * dt);
+    blades_->advance(*stage_loads_, [this](double tt, const multibody::State& b) { return shaft_at(tt, b); }, d, t, dt,
+                     s.body, *s.blades, aero);
   }
   sea_->advance(t + dt, platform_motion(s.body), s.sea);
+  brake_after_step(t + dt, s);
   s.max_rotor_speed_rad_s = std::max(s.max_rotor_speed_rad_s, std::abs(s.body.rotor_speed_rad_s));
   sample_controller(t + dt, dt, s);
 }
@@ -427,12 +509,13 @@ void FloatingScene::row(double t, const FloatingState& s, std::span<double> out)
   if (rotor_block_.written) rotor_->channel_values(t, *aero, v.subspan(rotor_block_.first, rotor_block_.count));
   if (blades_block_.written) blades_->channel_values(*s.blades, v.subspan(blades_block_.first, blades_block_.count));
   if (pitch_block_.written)
-    for (std::size_t b = 0; b < pitch_block_.count; ++b) v[pitch_block_.first + b] = s.held.pitch_rad * 180.0 / std::numbers::pi;
+    for (std::size_t b = 0; b < pitch_block_.count; ++b) v[pitch_block_.first + b] = s.held.pitch_rad[b] * 180.0 / std::numbers::pi;
   if (controller_block_.written) {
     std::array<double, 6> c{};
     control::controller_channel_values(s.controller->output, c);
     for (std::size_t k = 0; k < controller_source_.size(); ++k) v[controller_block_.first + k] = c[controller_source_[k]];
   }
+  if (brake_block_.written) v[brake_block_.first] = 1e-3 * controller_->brake_torque_N_m(*s.controller, t);
   for (std::size_t k = 0; k < picked_.size(); ++k) out[k] = values_[picked_[k]];
 }
 

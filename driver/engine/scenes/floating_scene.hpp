@@ -11,6 +11,8 @@
 // plain, copyable FloatingState. A step advances a state; a row reads one and changes nothing, so
 // output decimation changes nothing; a copy continues bit-identically; a checkpoint writes it
 // through its field lists (core/fields.hpp).
+#include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -33,10 +35,16 @@ namespace fowtsim::driver {
 io::Schema floating_scene_schema();
 RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress);
 
-// The controller's demands, held over the large step.
+// The controller's demands, held over the large step, and the HSS brake's contact with the shaft.
 struct HeldDemands {
-  double generator_torque_N_m = 0.0;  // HSS
-  double pitch_rad = 0.0;             // collective
+  double generator_torque_N_m = 0.0;           // HSS
+  std::array<double, 3> pitch_rad{};           // per blade [rad]
+  double brake_engaged_at_s = std::numeric_limits<double>::quiet_NaN();  // the brake's THSSBrDp (NaN: released) [s]
+  // Stick: the brake holds the drivetrain at rest (multibody::AppliedLoads::drivetrain_locked).
+  bool drivetrain_locked = false;
+  // Slip: the sign of the brake torque in GenTq's convention (+1 brakes a positive speed): the
+  // shaft's direction of motion at the step's start (or, from rest, the way the drive torque turns it).
+  double brake_direction = 0.0;
 };
 
 // Everything of a floating scene that changes during a run.
@@ -52,7 +60,7 @@ struct FloatingState {
 
 template <class Archive>
 void fields(Archive& a, HeldDemands& h) {
-  a.io(h.generator_torque_N_m, h.pitch_rad);
+  a.io(h.generator_torque_N_m, h.pitch_rad, h.brake_engaged_at_s, h.drivetrain_locked, h.brake_direction);
 }
 template <class Archive>
 void fields(Archive& a, FloatingState& s) {
@@ -114,6 +122,13 @@ class FloatingScene {
   void evaluate_on_copy(double t, const FloatingState& s, const multibody::State& body, FloatingState& work);
   RotorDemands demands(const FloatingState& s) const;
   void sample_controller(double t, double dt, FloatingState& s) const;
+  // The HSS brake over a step from t to t + dt: stick or slip before it (brake_before_step), a
+  // stop or a slip from rest after it (brake_after_step). ElastoDyn's FixHSSBrTq (FAST_Subs)
+  // limits the brake torque so that it never reverses the shaft; here a shaft whose speed the
+  // brake takes through zero within a step is stopped there and held while the brake can hold it.
+  void brake_before_step(double t, double dt, FloatingState& s) const;
+  void brake_after_step(double t_end, FloatingState& s);
+  double& drivetrain_speed(multibody::State& body) const;
 
   multibody::Params structure_;
   multibody::Model model_;
@@ -135,7 +150,7 @@ class FloatingScene {
   };
   std::vector<ChannelInfo> all_, written_;
   std::vector<std::size_t> picked_;                   // indices into all_, in written order
-  Block body_block_, sea_block_, rotor_block_, blades_block_, pitch_block_, controller_block_;
+  Block body_block_, sea_block_, rotor_block_, blades_block_, pitch_block_, controller_block_, brake_block_;
   std::vector<std::size_t> controller_source_;        // controller block channel k ← controller_channels()[source[k]]
 
   // Workspace (written before it is read; nothing in it crosses a step).

@@ -271,6 +271,17 @@ void TurbineBlades::use_step_spin_profile(double t, Data& d) {
                      d.mean_generator_acceleration_rad_s2};
 }
 
+void TurbineBlades::stop_spin(Data& d, multibody::State& state) const {
+  SpinState& s = d.rotor.state.spin;
+  s.generator_speed_rad_s = s.generator_acceleration_rad_s2 = s.generator_mean_acceleration_rad_s2 = 0.0;
+  d.mean_generator_acceleration_rad_s2 = 0.0;
+  if (!params_.torsional_flexibility) {
+    s.rotor_speed_rad_s = s.rotor_acceleration_rad_s2 = s.rotor_mean_acceleration_rad_s2 = 0.0;
+    d.mean_rotor_acceleration_rad_s2 = 0.0;
+  }
+  copy_spin(d, state);
+}
+
 void TurbineBlades::copy_spin(const Data& d, multibody::State& state) {
   const SpinState& s = d.rotor.state.spin;
   multibody::set_spin({s.rotor_azimuth_rad, s.rotor_speed_rad_s, d.mean_rotor_acceleration_rad_s2, s.generator_azimuth_rad,

@@ -79,6 +79,11 @@ class TurbineBlades {
                double dt_large, multibody::State& state, Data& d, RotorAero::Data* aero);
 
   const FlexibleRotor& rotor() const { return rotor_; }
+  // The HSS brake on the blades' spin (the scene's stick and slip, floating_scene.hpp): the torque
+  // the lock took in the last small step (LSS, SpinState::lock_torque_N_m), and a stop — the
+  // generator (with a rigid shaft the rotor too) at rest, its accelerations zero — copied to `state`.
+  static double lock_torque_N_m(const Data& d) { return d.rotor.state.spin.lock_torque_N_m; }
+  void stop_spin(Data& d, multibody::State& state) const;
 
   std::vector<ChannelInfo> channels() const;
   void channel_values(const Data& d, std::span<double> out) const;

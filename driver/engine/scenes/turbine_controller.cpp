@@ -8,10 +8,13 @@ TurbineController::Data TurbineController::make_data() const {
   Data d;
   if (const auto* p = std::get_if<control::BaselineParams>(&params_)) d.state = control::BaselineController::make_state(*p);
   else d.state = control::ExternalController::make_state(std::get<control::ExternalController::Params>(params_));
+  d.events = control::make_event_state(events_);
   return d;
 }
 
-void TurbineController::advance(const control::ControllerInput& u, double t, double dt, Data& d) const {
+void TurbineController::advance(const control::ControllerInput& measured, double t, double dt, Data& d) const {
+  control::ControllerInput u = measured;
+  control::event_status(d.events, u);  // what a DISCON sees in records 35 and 36
   std::visit(
       [&](const auto& p) {
         using P = std::decay_t<decltype(p)>;
@@ -26,6 +29,7 @@ void TurbineController::advance(const control::ControllerInput& u, double t, dou
         }
       },
       params_);
+  control::apply_events(events_, u, t, dt, d.events, d.output);
 }
 
 void TurbineController::finish(double t, Data& d) const {

@@ -129,6 +129,10 @@ void External::advance(const Params& p, const Input& u, double t, double dt, Sta
   record(s, swap::rotor_speed) = static_cast<float>(u.rotor_speed_rad_s);
   record(s, swap::measured_generator_torque) = static_cast<float>(s.torque_demand_N_m);
   record(s, swap::hub_wind_speed) = static_cast<float>(u.hub_wind_speed_m_s);
+  // The turbine's contactor and brake as the events left them (a grid loss opens the contactor);
+  // the library may change either (read back in outputs()).
+  record(s, swap::generator_contactor) = static_cast<float>(u.generator_contactor);
+  record(s, swap::shaft_brake) = static_cast<float>(u.shaft_brake);
   call(p, s.calls == 0 ? 0 : 1, t, s);
 
   s.torque_demand_N_m = read(s, swap::generator_torque_demand);
@@ -144,6 +148,10 @@ External::Output External::outputs(const Params& p, const Input& u, const State&
   y.blade_pitch_rad = s.calls > 0 ? s.pitch_demand_rad : u.blade_pitch_rad;
   y.generator_speed_rad_s = u.generator_speed_rad_s;
   y.generator_power_W = y.generator_torque_N_m * u.generator_speed_rad_s * p.settings.generator_efficiency;
+  // Record 35: 0 = the controller opens the contactor (no torque); record 36: ≠ 0 = brake on
+  // (Bladed's "shaft brake status"; ServoDyn reads 0 off, 1 brake 1 on).
+  y.generator_contactor = s.calls > 0 ? static_cast<int>(std::lround(read(s, swap::generator_contactor))) : 1;
+  y.shaft_brake = s.calls > 0 ? static_cast<int>(std::lround(read(s, swap::shaft_brake))) : 0;
   return y;
 }
 

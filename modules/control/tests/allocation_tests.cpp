@@ -8,6 +8,7 @@
 #include "fowtsim/testing/allocation_counter.hpp"
 
 #include "fowtsim/control/baseline_controller.hpp"
+#include "fowtsim/control/events.hpp"
 #include "fowtsim/control/external_controller.hpp"
 #include "fowtsim/control/presets.hpp"
 
@@ -46,4 +47,37 @@ TEST_CASE("controller step calls allocate nothing", "[unit][control]") {
   e.infile = "oc3_hywind";
   const ExternalController::Params p = ExternalController::make_params(e);
   CHECK(count_allocations<ExternalController>(p) == 0);
+}
+
+TEST_CASE("control events allocate nothing per call", "[unit][control]") {
+  // The events run after the law at every large step (events.hpp): fixed-size EventState only.
+  const BaselineParams p = nrel5mw_land_baseline();
+  EventsParams events;
+  EventParams loss, stuck, brake;
+  loss.type = EventType::grid_loss;
+  loss.at_s = 0.5;
+  loss.pitch_rate_rad_s = stuck.pitch_rate_rad_s = brake.pitch_rate_rad_s = 0.14;
+  stuck.type = EventType::pitch_stuck;
+  stuck.at_s = 1.0;
+  stuck.blade = 2;
+  brake.type = EventType::brake;
+  brake.at_s = 2.0;
+  events.events = {loss, stuck, brake};
+  BaselineState s = BaselineController::make_state(p);
+  EventState e = make_event_state(events);
+  ControllerInput u;
+  ControllerOutput y;
+  allocations = 0;
+  counting = true;
+  for (int k = 0; k < 400; ++k) {
+    u.generator_speed_rad_s = 125.0 + std::sin(0.01 * k);
+    event_status(e, u);
+    BaselineController::advance(p, u, 0.0125 * k, 0.0125, s);
+    y = BaselineController::outputs(p, u, s);
+    apply_events(events, u, 0.0125 * k, 0.0125, e, y);
+    u.blade_pitch_rad = y.blade_pitch_rad;
+  }
+  counting = false;
+  CHECK(allocations == 0);
+  CHECK(y.blade_pitch_rad[2] == e.fault_from_rad[2]);
 }

@@ -214,11 +214,14 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
     m(i, i) = 1.0;
     f[i] = 0.0;
   }
-  // Given accelerations (held DOFs, prescribed spin): move their columns to the right-hand side
-  // and replace their rows by u̇_i = given.
+  // Given accelerations (held DOFs, prescribed spin, a drivetrain the brake holds): move their
+  // columns to the right-hand side and replace their rows by u̇_i = given.
+  const int gen = model.generator_dof;
+  const bool locked = loads.drivetrain_locked && !model.acceleration_given[gen];
+  const double f_gen = f[gen];  // before the substitution, for the lock's reaction
   for (int i = 0; i < model.dof_count; ++i) {
-    if (!model.acceleration_given[i]) continue;
-    const bool prescribed = model.params.dofs.rotor == RotorSpin::prescribed;
+    if (!model.acceleration_given[i] && !(locked && i == gen)) continue;
+    const bool prescribed = model.params.dofs.rotor == RotorSpin::prescribed && model.acceleration_given[i];
     const double a = !prescribed || i < kRotor || i >= kTower ? 0.0
                      : i == kRotor             ? state.rotor_acceleration_rad_s2
                                                : state.generator_acceleration_rad_s2;
@@ -247,6 +250,7 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
   } else {
     out.acceleration = solve(m, f);
   }
+  out.drivetrain_lock_torque_N_m = locked ? out.mass.row(gen).dot(out.acceleration) - f_gen : 0.0;
   for (int i = 0; i < kMaxDofs; ++i) {
     if (!std::isfinite(out.acceleration[i])) {
       throw NumericalError({"multibody", t, "generalised acceleration u̇[" + std::to_string(i) + "]",

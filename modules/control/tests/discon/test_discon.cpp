@@ -4,6 +4,9 @@
 //
 // accInfile names the parameter set: "nrel5mw_land" or "oc3_hywind" (presets.hpp); any other name
 // fails the first call with aviFAIL = −1 and a message, which the tests use to check the error path.
+// With the suffix "+trip" it also trips on overspeed: above kTripSpeed it opens the generator
+// contactor (record 35 = 0) and applies the shaft brake (record 36 = 1), latched. Every call it
+// echoes the contactor and brake records it received into the first two logging records (165, 166).
 // Like any DISCON it keeps its state in static variables between calls.
 #include <cmath>
 #include <cstdio>
@@ -18,10 +21,14 @@ namespace {
 
 using namespace fowtsim::control;
 
+constexpr float kTripSpeed = 130.0f;  // generator speed of the "+trip" overspeed trip [rad/s]
+
 struct Controller {
   BaselineParams params;
   TorqueCurve curve;
   BaselineState state;
+  bool trips = false;    // "+trip" given
+  bool tripped = false;  // the overspeed trip has fired
 };
 std::optional<Controller> controller;  // the DISCON's state between calls
 
@@ -43,14 +50,17 @@ extern "C" __attribute__((visibility("default"))) void DISCON(float* avrSWAP, in
     return;
   }
   if (status == 0) {
-    const std::optional<BaselineParams> params = baseline_preset(accInfile);
+    std::string name = accInfile;
+    const bool trips = name.size() > 5 && name.ends_with("+trip");
+    if (trips) name.resize(name.size() - 5);
+    const std::optional<BaselineParams> params = baseline_preset(name);
     if (!params) {
       set_message(avrSWAP, avcMsg, std::string("test DISCON: unknown parameter set '") + accInfile +
                                        "' (expected nrel5mw_land or oc3_hywind)");
       *aviFAIL = -1;
       return;
     }
-    controller = Controller{*params, torque_curve(*params), BaselineState{}};
+    controller = Controller{*params, torque_curve(*params), BaselineState{}, trips, false};
   }
   if (!controller) {
     set_message(avrSWAP, avcMsg, "test DISCON: called before its first call (status 0)");
@@ -68,11 +78,14 @@ extern "C" __attribute__((visibility("default"))) void DISCON(float* avrSWAP, in
   for (int b = 0; b < kBladeCount; ++b) at(avrSWAP, swap::blade1_pitch_demand + b) = static_cast<float>(s.pitch_demand_rad[b]);
   at(avrSWAP, swap::collective_pitch_demand) = static_cast<float>(s.pitch_demand_rad[0]);
   at(avrSWAP, swap::pitch_rate_demand) = 0.0f;
-  at(avrSWAP, swap::generator_contactor) = 1.0f;
-  at(avrSWAP, swap::shaft_brake) = 0.0f;
+  at(avrSWAP, swap::logging_count) = 2.0f;
+  at(avrSWAP, static_cast<int>(std::lround(at(avrSWAP, swap::logging_start)))) = at(avrSWAP, swap::generator_contactor);
+  at(avrSWAP, static_cast<int>(std::lround(at(avrSWAP, swap::logging_start))) + 1) = at(avrSWAP, swap::shaft_brake);
+  if (controller->trips && m.generator_speed_rad_s > kTripSpeed) controller->tripped = true;
+  at(avrSWAP, swap::generator_contactor) = controller->tripped ? 0.0f : 1.0f;
+  at(avrSWAP, swap::shaft_brake) = controller->tripped ? 1.0f : 0.0f;
   at(avrSWAP, swap::yaw_actuator_torque) = 0.0f;
   at(avrSWAP, swap::yaw_rate_demand) = 0.0f;
   at(avrSWAP, swap::pitch_override) = 0.0f;
   at(avrSWAP, swap::torque_override) = 0.0f;
-  at(avrSWAP, swap::logging_count) = 0.0f;
 }

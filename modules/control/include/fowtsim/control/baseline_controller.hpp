@@ -27,6 +27,8 @@ struct ControllerInput {
   double rotor_speed_rad_s = 0.0;                     // Ω: rotor (LSS) speed [rad/s]; DLL record 21, unused by the baseline law
   std::array<double, kBladeCount> blade_pitch_rad{};  // measured blade pitch angles [rad]
   double hub_wind_speed_m_s = 0.0;                    // hub-height wind speed [m/s]; DLL record 27, unused by the baseline law
+  int generator_contactor = 1;                        // the turbine's contactor, 1 on / 0 off (DLL record 35 sent; events.hpp)
+  int shaft_brake = 0;                                // the turbine's HSS brake, 0 off / 1 on (DLL record 36 sent)
 };
 
 // What a controller hands back (the built-in law and the DLL interface share it).
@@ -35,6 +37,8 @@ struct ControllerOutput {
   std::array<double, kBladeCount> blade_pitch_rad{};  // blade-pitch demands [rad]
   double generator_power_W = 0.0;                     // electrical power T ω η [W] with the measured ω (OpenFAST GenPwr)
   double generator_speed_rad_s = 0.0;                 // measured generator speed [rad/s] (copied, for the GenSpeed channel)
+  int generator_contactor = 1;                        // the law's request (DLL record 35 returned), then the turbine's state: 1 on, 0 off
+  int shaft_brake = 0;                                // the law's request (DLL record 36 returned), then the turbine's: 0 off, 1 on
 };
 
 // GenTq, GenPwr, BlPitchC1–3, GenSpeed (module name `module`).

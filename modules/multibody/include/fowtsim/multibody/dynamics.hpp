@@ -37,6 +37,9 @@ struct Evaluation {
   GeneralisedVector acceleration = GeneralisedVector::Zero();  // u̇
   GeneralisedMatrix mass = GeneralisedMatrix::Zero();          // M
   GeneralisedVector force = GeneralisedVector::Zero();         // f
+  // With AppliedLoads::drivetrain_locked: the generalised torque r on the generator's DOF (LSS side)
+  // that keeps it at rest, M u̇ = f + r e_gen with u̇_gen = 0 [N·m]; 0 otherwise.
+  double drivetrain_lock_torque_N_m = 0.0;
 };
 
 // Solves M u̇ = f for the state under `loads`. Throws NumericalError (module "multibody", time t)

@@ -37,6 +37,9 @@ struct AppliedLoads {
   // side. Must be symmetric positive semi-definite (hydro's Output::added_mass).
   Mat6 platform_added_mass = Mat6::Zero();   // [kg, kg·m, kg·m²]
   double generator_torque_N_m = 0.0;         // HSS electrical torque (OpenFAST GenTq sign: > 0 brakes ψ̇ > 0) [N·m]
+  // A brake holding the drivetrain at rest (stick): the generator's DOF (the rotor's with a rigid
+  // shaft) gets no acceleration; the torque that takes is Evaluation::drivetrain_lock_torque_N_m.
+  bool drivetrain_locked = false;
   // Flexible blades: load of blade i on the hub at its root (force; moment about point_m; both g).
   // It carries the blade's weight, inertia and gyroscopic effect. Must stay zero with rigid blades.
   std::array<RootLoads, kMaxBlades> blade_root{};
