@@ -15,7 +15,7 @@
 using namespace fowtsim;
 using namespace fowtsim::sweep_test;
 
-TEST_CASE("sweep example: every case deck passes the run's checks with DLC 6.1 parked inside the deck's pitch limits",
+TEST_CASE("sweep example: every case deck passes the run's checks with DLC 6.1 idling at the deck's pitch limit",
           "[unit][sweep]") {
   const std::filesystem::path dir = testing::scratch_dir("sweep_example_decks");
   const driver::sweep::SweepSpec spec = driver::sweep::read_sweep_spec(testing::source_dir() / "inputs/sweeps/dlc12_oc3.yaml");
@@ -24,11 +24,12 @@ TEST_CASE("sweep example: every case deck passes the run's checks with DLC 6.1 p
   const driver::sweep::SweepLayout layout{dir / "out"};
   const std::vector<std::string> hashes = driver::sweep::write_case_decks(spec, cases, layout);
   CHECK(hashes.size() == 9);
-  // The parked cases' own check, as `fowtsim run` applies it (the controller's pitch limits).
+  // The idling cases' own check, as `fowtsim run` applies it (the controller's pitch limits):
+  // feathered at the deck's max_pitch_rad 1.570796 rad = 90.00000459°, no limit moved.
   for (const char* name : {"dlc61_yaw-8", "dlc61_yaw0", "dlc61_yaw8"}) {
     INFO(name);
     CHECK_NOTHROW(driver::validate_scene_deck(layout.deck(name)));
-    CHECK_THAT(read_text(layout.deck(name)), Catch::Contains("min_pitch_rad: 1.570796\n"));
+    CHECK_THAT(read_text(layout.deck(name)), Catch::Contains("operating_mode: idling\n") && !Catch::Contains("min_pitch_rad"));
   }
   // --list checks the same decks and succeeds.
   CHECK(run_fowtsim("sweep " + (testing::source_dir() / "inputs/sweeps/dlc12_oc3.yaml").string() + " --list --output-dir " +
@@ -39,7 +40,8 @@ TEST_CASE("sweep example: every case deck passes the run's checks with DLC 6.1 p
 TEST_CASE("sweep: a case deck `fowtsim run` would reject stops --list and --slurm --dry-run and a local run before anything",
           "[unit][sweep]") {
   const std::filesystem::path dir = testing::scratch_dir("sweep_rejected_case");
-  // The old DLC 6.1 preset's value: π/2 > the OC3 deck's max_pitch_rad 1.570796.
+  // A lower pitch limit above the deck's max_pitch_rad 1.570796 (π/2, the value an early DLC 6.1
+  // preset set) makes every case one the run refuses.
   const std::filesystem::path spec = dir / "spec.yaml";
   std::ofstream(spec) << "sweep:\n  name: parked\n  base_deck: "
                       << (testing::source_dir() / "inputs/oc3_hywind/turbine_ntm_12mps_irregular.yaml").string() << R"(
