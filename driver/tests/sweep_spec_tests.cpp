@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "fowtsim/io/deck.hpp"
+#include "fowtsim/wind/iec_conditions.hpp"
 #include "fowtsim/testing/skip.hpp"
 #include "sweep/case_expansion.hpp"
 #include "sweep/case_files.hpp"
@@ -92,7 +93,7 @@ TEST_CASE("sweep presets: DLC 1.2 expands speeds × six NTM seeds with the norma
   }
   CHECK(seeds.size() == 2 * cases.size());
   // NTM σ1 = I_ref (0.75 V + 5.6) with I_ref = 0.14 (class B): 2.044 m/s at 12 m/s (IEC 61400-1 ed.3 eq. 11).
-  CHECK(ntm_sigma_m_s("B", 12.0) == Approx(2.044).epsilon(1e-12));
+  CHECK(wind::ntm_sigma(wind::TurbulenceCategory::B, 12.0) == Approx(2.044).epsilon(1e-12));
 }
 
 TEST_CASE("sweep presets: DLC 1.1 and 1.6 are NTM cases, 1.6 with the severe sea, neither in the fatigue sum", "[unit][sweep]") {

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "fowtsim/wind/iec_conditions.hpp"
 #include "run/interrupt.hpp"
 #include "sweep/case_expansion.hpp"
 #include "sweep/case_files.hpp"
@@ -40,6 +41,17 @@ std::string optional_number(const std::optional<double>& v, const char* format =
   return v ? fmt::format(fmt::runtime(format), *v) : "–";
 }
 
+std::optional<double> turbulence_sigma_m_s(const SweepCase& c, const TurbineClass& turbine) {
+  std::string model;
+  for (const DeckOverride& o : c.overrides)
+    if (o.key_path == "wind.turbulence.model") model = o.yaml_value;
+  if (model.empty() || !c.wind_speed_m_s) return std::nullopt;
+  const wind::TurbulenceCategory category = wind::parse_turbulence_category(turbine.turbulence_class);
+  if (model == "ETM") return wind::etm_sigma(category, turbine.wind_class, *c.wind_speed_m_s);
+  if (model == "EWM") return wind::ewm_sigma(*c.wind_speed_m_s);
+  return wind::ntm_sigma(category, *c.wind_speed_m_s);
+}
+
 void print_cases(std::FILE* out, const SweepSpec& spec, const std::vector<SweepCase>& cases) {
   fmt::print(out, "sweep {}: {} cases over {} (each {} s: {} s transient + {} s analysed)\n", spec.name, cases.size(),
              spec.base_deck.string(), spec.transient_s + spec.analysis_s, spec.transient_s, spec.analysis_s);
@@ -47,10 +59,8 @@ void print_cases(std::FILE* out, const SweepSpec& spec, const std::vector<SweepC
              "Tp s", "factors");
   for (const SweepCase& c : cases) {
     const LoadCaseGroup& g = spec.groups[c.group];
-    // σ1 of the normal turbulence model, what the generator draws for the operating presets.
-    const std::optional<double> sigma = g.preset.rfind("dlc1.", 0) == 0 && c.wind_speed_m_s
-                                            ? std::optional(ntm_sigma_m_s(spec.turbine.turbulence_class, *c.wind_speed_m_s))
-                                            : std::nullopt;
+    // σ1 the generator draws for a preset's turbulent wind (NTM, ETM or EWM: fowtsim/wind/iec_conditions.hpp).
+    const std::optional<double> sigma = g.preset.empty() ? std::nullopt : turbulence_sigma_m_s(c, spec.turbine);
     std::string factors = g.preset.empty() ? "" : g.preset;
     for (const auto& [label, value] : c.factors) factors += (factors.empty() ? "" : " ") + label + "=" + value;
     fmt::print(out, "{:<32} {:>7} {:>7} {:>11} {:>11} {:>6} {:>6}  {}\n", c.name, optional_number(c.wind_speed_m_s),

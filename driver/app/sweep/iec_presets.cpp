@@ -11,10 +11,6 @@
 
 namespace fowtsim::driver::sweep {
 
-double ntm_sigma_m_s(const std::string& turbulence_class, double hub_speed_m_s) {
-  return wind::ntm_sigma(wind::parse_turbulence_category(turbulence_class), hub_speed_m_s);
-}
-
 namespace {
 
 constexpr double kN = 1.35;  // γ_f, normal design situations (IEC 61400-1 ed. 4 Table 3)

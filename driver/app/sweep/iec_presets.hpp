@@ -25,9 +25,6 @@ inline constexpr int kPresetSeeds = 6;
 // (fowtsim/wind/iec_conditions.hpp); the normal wind profile's exponent is the presets' own.
 inline constexpr double kNwpShearExponent = 0.2;   // the normal wind profile exponent (ed.3 §6.3.1.2)
 
-// σ1 of the NTM at a hub-height speed for a spec's turbulence class "A", "B" or "C" (--list shows it).
-double ntm_sigma_m_s(const std::string& turbulence_class, double hub_speed_m_s);
-
 // One design load case of the standard, as a preset.
 struct PresetInfo {
   std::string_view name;       // "dlc2.3"
