@@ -67,28 +67,29 @@ TEST_CASE("the rotating semicircle conveying fluid: centrifugal outward, Corioli
   CHECK(std::abs(rest.quarter_y) < 1e-15);
 
   // In plane (Fig. 3.8): the rotation pushes the apex outward, away from the axis, the more the
-  // faster, as Ω² in this linear range: measured Δz 1.41e-3 and 5.67e-3 m, ratio 4.02 (the
-  // centrifugal load ∝ Ω² and its softening (Ω/ω)² ≈ 1 %); bound 4 ± 0.1.
+  // faster, as Ω² in this nearly linear range: measured Δz 0.918e-3 and 3.64e-3 m at μ_Ω* = 0.25
+  // and 0.5, ratio 3.96 (the centrifugal load ∝ Ω², less the rotation's change of stiffness, a
+  // physical departure, not a residual); bound 4 ± 0.2.
   const double dz_slow = slow.apex_z - rest.apex_z, dz_fast = fast.apex_z - rest.apex_z;
   CHECK(dz_slow > 0.0);
-  CHECK(dz_fast / dz_slow == Approx(4.0).margin(0.1));
+  CHECK(dz_fast / dz_slow == Approx(4.0).margin(0.2));
 
   // Out of plane (Fig. 3.9): −2 m^f V Ω × t points along +y where the fluid flows away from the
   // axis (t_z > 0, first half) and along −y where it flows back: the quarter points deflect
-  // opposite ways, by equal amounts (the pipe and its load are antisymmetric about the apex:
-  // measured equal to 1e-6 relative; bound 1e-4, the flow's in-plane stretch breaks the symmetry
-  // only at second order).
+  // opposite ways, by equal amounts: ±13.6 mm at μ_Ω* = 0.25 (pipe and load are antisymmetric
+  // about the apex: measured equal to the last bit; bound 1e-10 relative).
   CHECK(slow.quarter_y > 0.0);
   CHECK(slow.three_quarter_y < 0.0);
-  CHECK(std::abs(slow.quarter_y + slow.three_quarter_y) < 1e-4 * std::abs(slow.quarter_y));
-  // Reversing the flow reverses it: measured equal and opposite to 1e-6; bound 1e-4.
-  CHECK(std::abs(back.quarter_y + slow.quarter_y) < 1e-4 * std::abs(slow.quarter_y));
-  // Linear in Ω (Coriolis ∝ Ω V): doubling Ω doubles it, measured ratio 2.0 ± 0.01 (the
-  // centrifugal softening out of plane); bound 2 ± 0.05.
-  CHECK(fast.quarter_y / slow.quarter_y == Approx(2.0).margin(0.05));
+  CHECK(std::abs(slow.quarter_y + slow.three_quarter_y) < 1e-10 * std::abs(slow.quarter_y));
+  // Reversing the flow reverses it: measured equal and opposite to the last bit; bound 1e-10.
+  CHECK(std::abs(back.quarter_y + slow.quarter_y) < 1e-10 * std::abs(slow.quarter_y));
+  // Nearly linear in Ω (Coriolis ∝ Ω V): doubling Ω nearly doubles it, measured ratio 1.938 (the
+  // rotation's own stiffness terms, ∝ Ω², take 3 % at μ_Ω* = 0.5: physics, not a residual); bound
+  // 2 ± 0.1.
+  CHECK(fast.quarter_y / slow.quarter_y == Approx(2.0).margin(0.1));
   // In numbers: the same as the flow's Coriolis load 2 m^f V Ω × t put on the pipe at rest as a
-  // dead load; measured ratio 1.00x (the centrifugal stiffness mΩ² out of plane, (Ω/ω)²); bound
-  // 1 ± 0.02. With the seed's eq. 3.17 flux it would be half (PIPE.md, "Departure").
+  // dead load; measured ratio 0.992 (the rotation's stiffness terms again, (Ω/ω)²); bound
+  // 1 ± 0.03 (against 0.5 for half the Coriolis force). With the seed's eq. 3.17 flux it would be half (PIPE.md, "Departure").
   const Deflection reference = solve(0.25, 1.0, true);
-  CHECK(slow.quarter_y / reference.quarter_y == Approx(1.0).margin(0.02));
+  CHECK(slow.quarter_y / reference.quarter_y == Approx(1.0).margin(0.03));
 }
