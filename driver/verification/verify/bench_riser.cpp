@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -80,7 +81,7 @@ void bench_riser(std::FILE* out) {
              reference.max_bending_moment_n_m_overall, reference.final_mid_sway_m);
   fmt::print(out, "{:>8} | {:>12} | {:>12} | {:>10}\n", "Δt [ms]", "peak |M| err", "mid sway err", "x real time");
   double largest_stable = 0.0, largest_accurate = 0.0, seed_error = 0.0;
-  for (const double dt : {2.5e-4, 5e-4, 1e-3, 2e-3, 4e-3, 8e-3, 1.6e-2, 3.2e-2, 6.4e-2}) {
+  for (const double dt : {2.5e-4, 5e-4, 1e-3, 2e-3, 4e-3, 8e-3, 1.6e-2, 3.2e-2, 6.4e-2, 0.128, 0.256, 0.512}) {
     const auto start = std::chrono::steady_clock::now();
     try {
       const int every = std::max(1, static_cast<int>(std::lround(1e-2 / dt)));  // the envelope every 10 ms
@@ -100,15 +101,19 @@ void bench_riser(std::FILE* out) {
   fmt::print(out, "largest Δt that runs: {:.3g} ms; largest within 1 % of the reference: {:.3g} ms; the seed's 1 ms: {:.2e}\n\n",
              largest_stable * 1e3, largest_accurate * 1e3, seed_error);
 
-  // Real-time factor: case (a) at the seed's Δt, no envelope sampling, best of three.
-  double best = std::numeric_limits<double>::infinity();
+  // Real-time factor: case (a) at the seed's Δt, no envelope sampling, best of three, by the wall
+  // clock and by the process's CPU time (on a shared machine the wall clock counts other jobs too).
+  double best = std::numeric_limits<double>::infinity(), best_cpu = best;
   for (int k = 0; k < 3; ++k) {
     const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpu = std::clock();
     rs::simulate(rs::seed_case('a'), 100, 1e-3, kTend, {}, std::numeric_limits<int>::max());
     best = std::min(best, seconds_since(start));
+    best_cpu = std::min(best_cpu, static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC);
   }
-  fmt::print(out, "real-time factor, case (a), 100 volumes, Δt 1 ms, one core: {:.1f}x ({:.3f} s for {} s; issue 26 asks ≥ 20x)\n",
-             kTend / best, best, kTend);
+  fmt::print(out, "real-time factor, case (a), 100 volumes, Δt 1 ms, one thread: {:.1f}x by the wall clock, {:.1f}x by CPU time "
+                  "({:.3f} s, {:.3f} s CPU for {} s; issue 26 asks ≥ 20x)\n",
+             kTend / best, kTend / best_cpu, best, best_cpu, kTend);
 }
 
 }  // namespace fowtsim::driver
