@@ -86,6 +86,7 @@ std::string expected_duration(const std::string& name) {
   if (name == "beam") return "about 15 minutes (its ARKODE 49-volume case alone takes 12)";
   if (name == "turbine") return "about 5 minutes (84 runs of the coupled OC3 load case)";
   if (name == "stability") return "about 3 minutes (60 runs of 120 s of the default deck)";
+  if (name == "riser") return "about 20 seconds (the four riser cases and a time-step study)";
   if (name == "startup") return "about 15 seconds (twice 600 s of the land-based turbine, seed 002 Sec. 5.6)";
   return "under a minute";
 }
@@ -199,7 +200,7 @@ int main(int argc, char** argv) {
                      "directory holding reference/ (default ../shared next to the repository: " + shared_dir + ")");
   std::vector<std::string> bench_cases;
   auto* bench = app.add_subcommand("bench", "benchmark run time against error");
-  bench->add_option("cases", bench_cases, "cases (default all): coupling, beam, hydro, waves, aero, multibody, startup, turbine, stability");
+  bench->add_option("cases", bench_cases, "cases (default all): coupling, beam, hydro, waves, aero, multibody, startup, turbine, stability, riser");
   bench->add_option("--shared", shared_dir, "directory holding reference/ (default " + shared_dir + ")");
 
   std::string wind_deck, wind_out;

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include "beamdyn/beamdyn_channels.hpp"
 #include "beamdyn/beamdyn_run.hpp"
@@ -12,6 +13,7 @@
 #include "decks/beam_deck.hpp"
 #include "fowtsim/beam/beam_outputs.hpp"
 #include "fowtsim/beam/pipe_benchmarks.hpp"
+#include "fowtsim/beam/riser.hpp"
 #include "fowtsim/beam/solvers.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/readers.hpp"
@@ -162,4 +164,56 @@ TEST_CASE("a pipe deck with a bore wider than its tube stops before the run, at 
   CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run"), nullptr),
                     Catch::Contains("pipe.yaml:5") && Catch::Contains("inner_diameter_m"));
   CHECK_FALSE(std::filesystem::exists(dir / "run.out"));
+}
+
+TEST_CASE("the shipped riser decks are the seed's riser of modules/beam (riser::seed_case)", "[verification][beam_scene]") {
+  // inputs/pipes/riser_{a,b,c,d}.yaml hold seed 000 §3.5.3's numbers as deck keys (sea, tip motion,
+  // valves, static start); beam::riser::seed_case holds the same in code for the module's tests.
+  // Each deck run for 0.5 s (the stretch ramp and the static start) against the module's loop: the
+  // root loads agree to the .out's 10 digits (measured ≤ 2e-10 relative; bound 1e-8 — the two differ
+  // by the frame origin, 300 m apart, and rounding).
+  for (const char c : {'a', 'b', 'c', 'd'}) {
+    const auto dir = testing::scratch_dir(std::string("pipe_scene_riser_") + c);
+    RunRequest request = run_request(testing::source_dir() / fmt::format("inputs/pipes/riser_{}.yaml", c), dir / "riser");
+    request.t_max_s = 0.5;
+    request.output_format = "out";
+    run_scene(request, nullptr);
+    const io::ChannelTable t = io::read_channels(dir / "riser.out");
+
+    const beam::riser::RiserSetup setup = beam::riser::seed_case(c);
+    const beam::BeamModel model = beam::riser::riser_model(setup, 100);
+    beam::BeamState state = beam::make_state(model);
+    beam::BeamInput in;
+    beam::riser::riser_input(setup, 0.0, in);
+    beam::solve_static(model, in, state);
+    beam::DynamicStepper stepper(model, beam::DynamicOptions{});
+    for (int k = 0; k < 500; ++k) {
+      beam::riser::riser_input(setup, (k + stepper.input_time_fraction()) * 1e-3, in);
+      stepper.step(in, 1e-3, state);
+    }
+    const Vec6 root = beam::root_reaction(model, state);
+    const double scale = root.head<3>().norm(), moment_scale = root.tail<3>().norm();
+    INFO("case " << c << ": RootFzr " << t.columns[*t.find("RootFzr")].back() << " N, module " << root(2) << " N");
+    CHECK(t.columns[*t.find("RootFzr")].back() == Approx(root(2)).margin(1e-8 * scale));
+    CHECK(t.columns[*t.find("RootFyr")].back() == Approx(root(1)).margin(1e-8 * scale));
+    CHECK(t.columns[*t.find("RootMxr")].back() == Approx(root(3)).margin(1e-8 * moment_scale));
+  }
+}
+
+TEST_CASE("a pipe deck with a flowing closed valve or a moved free tip stops before the run, at the key", "[unit][beam_scene]") {
+  const auto dir = testing::scratch_dir("pipe_scene_valve");
+  const auto deck = dir / "pipe.yaml";
+  const std::string pipe = "simulation: {analysis: dynamic, t_max_s: 0.01, dt_s: 0.001}\npipe:\n  length_m: 1\n  outer_diameter_m: 0.02\n"
+                           "  inner_diameter_m: 0.01\n  youngs_modulus_Pa: 1e9\n  density_kg_m3: 1000\n";
+  std::ofstream(deck) << pipe << "  tip_end: clamped\nfluid:\n  density_kg_m3: 1000\n  valve: closed_tip\n  velocity_m_s: 1.0\n";
+  CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run"), nullptr),
+                    Catch::Contains("pipe.yaml:12") && Catch::Contains("velocity_m_s") && Catch::Contains("closed valve"));
+  std::ofstream(deck) << pipe << "tip_motion: {sway_amplitude_m: 0.1}\n";
+  CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run"), nullptr),
+                    Catch::Contains("pipe.yaml:8") && Catch::Contains("tip_motion") && Catch::Contains("held tip"));
+  std::ofstream(deck) << pipe << "root: {angular_velocity_rad_s: [0, 0, 1]}\nsea: {drag_coefficient: 1.0}\n";
+  CHECK_THROWS_WITH(run_scene(run_request(deck, dir / "run"), nullptr),
+                    Catch::Contains("pipe.yaml:8") && Catch::Contains("angular_velocity_rad_s"));
+  CHECK_FALSE(std::filesystem::exists(dir / "run.out"));
+  CHECK_FALSE(std::filesystem::exists(dir / "run.h5"));
 }

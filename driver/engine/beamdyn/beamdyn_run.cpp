@@ -76,6 +76,7 @@ RunReport run_single_beam(const BeamDynSetup& setup_in, const SingleBeamRun& how
   const beam::BeamModel model = [&] {
     beam::BeamModel m = beam::discretise(setup.definition, how.segments);
     m.flow = setup.flow;
+    m.water = setup.water;
     return m;
   }();
 

@@ -142,6 +142,10 @@ void beamdyn_input(const BeamDynSetup& s, const beam::BeamModel& model, const be
   in.node_loads.resize(model.node_count());
   for (int n = 0; n < model.node_count(); ++n) in.node_loads[n] = per_length * model.nodes[n].segment_length_m;
   in.tip_load << rt * s.tip_load.head<3>(), rt * s.tip_load.tail<3>();
+  if (s.tip_motion) {
+    in.tip_displacement_m = rt * s.tip_motion->displacement(t - s.t_initial_s);
+    in.tip_velocity_m_s = rt * s.tip_motion->velocity(t - s.t_initial_s);
+  }
   for (const io::BeamDynPointLoad& p : s.point_loads) {
     const double arc = p.eta * model.length_m;
     const int n = std::clamp(static_cast<int>(arc / model.nodes[0].segment_length_m), 0, model.node_count() - 1);

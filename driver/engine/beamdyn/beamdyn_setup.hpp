@@ -16,6 +16,7 @@
 
 #include "fowtsim/beam/beam_model.hpp"
 #include "fowtsim/beam/beam_state.hpp"
+#include "fowtsim/beam/tip_motion.hpp"
 #include "fowtsim/io/beamdyn_input.hpp"
 
 namespace fowtsim::driver {
@@ -23,6 +24,8 @@ namespace fowtsim::driver {
 struct BeamDynSetup {
   beam::BeamDefinition definition;
   std::optional<beam::InternalFlow> flow{};   // fluid flowing inside: a pipe (the `pipe` scene)
+  std::optional<beam::SurroundingWater> water{};  // still water around it, in the root frame (the `pipe` scene's sea)
+  std::optional<beam::RampAndSway> tip_motion{};  // prescribed motion of a held tip, global (the `pipe` scene)
   Mat3 root_orientation0 = Mat3::Identity();  // root axes at t0 (columns, global) = GlbDCMᵀ
   Vec3 root_position_m = Vec3::Zero();        // GlbPos at t0, global [m]
   Vec3 angular_velocity_rad_s = Vec3::Zero(); // RootVel(4..6), global [rad/s]

@@ -38,6 +38,7 @@ struct LoadKeys {
 struct SceneKeys {
   std::string analysis;
   double t_max_s = 0.0, dt_s = 0.0;
+  bool static_start = false;
   RootKeys root;
   Vec3 gravity_m_s2 = Vec3::Zero();
   LoadKeys loads;
@@ -50,7 +51,10 @@ const DeckSection<SceneKeys>& scene_keys() {
         .key("t_max_s", Schema::number().unit("s").greater_than(0.0).default_value(1.0).doc("simulated time (dynamic)"),
              &SceneKeys::t_max_s)
         .key("dt_s", Schema::number().unit("s").greater_than(0.0).default_value(0.005).doc("beam time step (dynamic)"),
-             &SceneKeys::dt_s);
+             &SceneKeys::dt_s)
+        .key("static_start", Schema::boolean().default_value(false)
+                                 .doc("dynamic: start from the static equilibrium under the loads at the start time"),
+             &SceneKeys::static_start);
     DeckSection<RootKeys> root;
     root.key("position_m", number_vector(3, "root position, global frame").optional(), &RootKeys::position_m)
         .key("angular_velocity_rad_s", number_vector(3, "constant angular velocity of the root about the global origin").optional(),
@@ -83,8 +87,18 @@ struct PipeKeys {
 };
 struct FluidKeys {
   double density_kg_m3 = 0.0, velocity_m_s = 0.0, viscosity_Pa_s = 0.0, roughness_m = 0.0, pressure_Pa = 0.0;
-  std::string pressure_at;
+  std::optional<std::string> pressure_at;
+  std::string valve;
   bool seed_momentum_flux = false;
+};
+// The pipe scene's `sea:` (beam::SurroundingWater) and `tip_motion:` (beam::RampAndSway) keys.
+struct SeaKeys {
+  double density_kg_m3 = 0.0, inertia_coefficient = 0.0, drag_coefficient = 0.0, surface_z_m = 0.0;
+  Vec3 current_m_s = Vec3::Zero();
+};
+struct TipMotionKeys {
+  double stretch_m = 0.0, stretch_time_s = 0.0, sway_amplitude_m = 0.0, sway_period_s = 0.0, sway_start_s = 0.0;
+  Vec3 sway_direction = Vec3::UnitY();
 };
 
 const DeckSection<PipeKeys>& pipe_keys() {
@@ -130,12 +144,59 @@ const DeckSection<FluidKeys>& fluid_keys() {
         .key("roughness_m", non_negative("m", "wall roughness ε of the Haaland friction factor"), &FluidKeys::roughness_m)
         .key("pressure_Pa", Schema::number().unit("Pa").default_value(0.0).doc("internal gauge pressure at the end named by pressure_at"),
              &FluidKeys::pressure_Pa)
-        .key("pressure_at", Schema::choice({"tip", "root"}).default_value("tip").doc("where pressure_Pa is given"),
+        .key("pressure_at", Schema::choice({"tip", "root"}).optional()
+                                .doc("where pressure_Pa is given (default: the tip, or the open end when a valve is closed)"),
              &FluidKeys::pressure_at)
+        .key("valve", Schema::choice({"open", "closed_tip", "closed_root"}).default_value("open")
+                          .doc("a closed valve stops the flow (velocity_m_s must be 0): closed_tip holds the source's pressure "
+                               "(given at the root), closed_root leaves the column open at the tip (pressure_Pa there, "
+                               "0 = atmospheric)"),
+             &FluidKeys::valve)
         .key("seed_momentum_flux", Schema::boolean().default_value(false)
                                        .doc("the seed's eq. 3.17 flux (half the flow's Coriolis force; for comparison only)"),
              &FluidKeys::seed_momentum_flux);
     return f;
+  }();
+  return section;
+}
+
+const DeckSection<SeaKeys>& sea_keys() {
+  static const DeckSection<SeaKeys> section = [] {
+    DeckSection<SeaKeys> w;
+    w.key("density_kg_m3", Schema::number().unit("kg_m3").greater_than(0.0).default_value(1025.0).doc("sea water density"),
+          &SeaKeys::density_kg_m3)
+        .key("inertia_coefficient", Schema::number().at_least(1.0).default_value(1.0)
+                                        .doc("Morison C_m; the added mass is (C_m − 1) ρ A_e normal to the axis (still water)"),
+             &SeaKeys::inertia_coefficient)
+        .key("drag_coefficient", Schema::number().at_least(0.0).default_value(0.0)
+                                     .doc("Morison C_d on the normal velocity of the water relative to the pipe"),
+             &SeaKeys::drag_coefficient)
+        .key("surface_z_m", Schema::number().unit("m").default_value(0.0)
+                                .doc("still-water level, global z: volumes whose node is above it are dry"),
+             &SeaKeys::surface_z_m)
+        .key("current_m_s", number_vector(3, "uniform current, global frame").optional(), &SeaKeys::current_m_s);
+    return w;
+  }();
+  return section;
+}
+
+const DeckSection<TipMotionKeys>& tip_motion_keys() {
+  static const DeckSection<TipMotionKeys> section = [] {
+    auto length = [](const char* doc) { return Schema::number().unit("m").default_value(0.0).doc(doc); };
+    auto time = [](double d, const char* doc) { return Schema::number().unit("s").greater_than(0.0).default_value(d).doc(doc); };
+    DeckSection<TipMotionKeys> m;
+    m.key("stretch_m", length("axial displacement of the tip, along the pipe from root to tip, reached at stretch_time_s "
+                              "(seed 000 eq. 3.66)"),
+          &TipMotionKeys::stretch_m)
+        .key("stretch_time_s", time(1.0, "duration of the stretch's linear ramp from t = 0"), &TipMotionKeys::stretch_time_s)
+        .key("sway_amplitude_m", length("amplitude A of the sway A sin(2π (t − sway_start_s)/sway_period_s) (eq. 3.67)"),
+             &TipMotionKeys::sway_amplitude_m)
+        .key("sway_period_s", time(10.0, "period of the sway"), &TipMotionKeys::sway_period_s)
+        .key("sway_start_s", Schema::number().unit("s").at_least(0.0).default_value(0.0).doc("the sway starts here (0 before)"),
+             &TipMotionKeys::sway_start_s)
+        .key("sway_direction", number_vector(3, "direction of the sway, global frame (normalised)").optional(),
+             &TipMotionKeys::sway_direction);
+    return m;
   }();
   return section;
 }
@@ -172,6 +233,7 @@ RunReport run_one_beam(const io::ValidatedDeck& deck, BeamDynSetup setup, int se
   setup.distributed_load << keys.loads.distributed_force_N_m, keys.loads.distributed_moment_N_m_m;
   setup.tip_load << keys.loads.tip_force_N, keys.loads.tip_moment_N_m;
   setup.dynamic = keys.analysis == "dynamic";
+  setup.quasi_static_init = setup.dynamic && keys.static_start;
   setup.t_final_s = keys.t_max_s;
   setup.dt_s = keys.dt_s;
   setup.spectral_radius = spectral_radius;
@@ -214,7 +276,11 @@ RunReport run_beam_scene(const RunRequest& request, const ProgressCallback& prog
 
 Schema pipe_scene_schema() {
   return scene_schema({{"pipe", pipe_keys().schema().doc("the pipe: straight tube, wall, ends, discretisation")},
-                       {"fluid", fluid_keys().schema().optional().doc("the fluid inside; absent = an empty pipe")}});
+                       {"fluid", fluid_keys().schema().optional().doc("the fluid inside; absent = an empty pipe")},
+                       {"sea", sea_keys().schema().optional()
+                                   .doc("still water around the pipe: buoyancy, Morison added mass and drag; absent = in air")},
+                       {"tip_motion", tip_motion_keys().schema().optional()
+                                          .doc("prescribed motion of a held tip (seed 000 eqs. 3.66–3.67); absent = at rest")}});
 }
 
 RunReport run_pipe_scene(const RunRequest& request, const ProgressCallback& progress) {
@@ -223,6 +289,16 @@ RunReport run_pipe_scene(const RunRequest& request, const ProgressCallback& prog
   pipe_keys().read_into(deck.section("pipe"), p);
   FluidKeys f;
   if (deck.has("fluid")) fluid_keys().read_into(deck.section("fluid"), f);
+  // A closed valve: no flow, and the pressure given at the open end.
+  const std::string open_end = f.valve == "closed_tip" ? "root" : "tip";
+  if (f.valve != "open" && f.velocity_m_s != 0.0)
+    throw InputError({"pipe", std::nullopt, "fluid.velocity_m_s", "0 with a closed valve"},
+                     where(deck, "fluid.velocity_m_s") + ": a closed valve (fluid.valve: " + f.valve + ") stops the flow; expected 0");
+  if (f.valve != "open" && f.pressure_at && *f.pressure_at != open_end)
+    throw InputError({"pipe", std::nullopt, "fluid.pressure_at", open_end},
+                     where(deck, "fluid.pressure_at") + ": with fluid.valve: " + f.valve + " the pressure is given at the open end (" +
+                         open_end + ")");
+  const std::string pressure_at = f.pressure_at.value_or(open_end);
   const beam::PipeDefinition def{
       .line = beam::ReferenceLine::straight(Vec3::Zero(), Mat3::Identity(), p.length_m, [](double) { return 0.0; }),
       .outer_diameter_m = p.outer_diameter_m, .inner_diameter_m = p.inner_diameter_m,
@@ -230,7 +306,7 @@ RunReport run_pipe_scene(const RunRequest& request, const ProgressCallback& prog
       .pipe_density_kg_m3 = p.density_kg_m3, .fluid_density_kg_m3 = f.density_kg_m3, .flow_velocity_m_s = f.velocity_m_s,
       .fluid_viscosity_pa_s = f.viscosity_Pa_s, .wall_roughness_m = f.roughness_m, .stiffness_damping_s = p.damping_mu_s,
       .root_end = end_condition(p.root_end), .tip_end = end_condition(p.tip_end), .boundary_pressure_pa = f.pressure_Pa,
-      .pressure_at_tip = f.pressure_at == "tip", .seed_momentum_flux = f.seed_momentum_flux};
+      .pressure_at_tip = pressure_at == "tip", .seed_momentum_flux = f.seed_momentum_flux};
   BeamDynSetup setup = [&] {
     try {  // the pipe's own checks (bore smaller than the tube, a fluid for a flow), located at its key
       return BeamDynSetup{.definition = beam::pipe_beam_definition(def), .flow = beam::pipe_flow(def)};
@@ -239,6 +315,39 @@ RunReport run_pipe_scene(const RunRequest& request, const ProgressCallback& prog
       throw InputError(e.context(), where(deck, deck.has(key) ? key : "pipe") + ": " + e.message());
     }
   }();
+  if (deck.has("sea")) {
+    SeaKeys w;
+    sea_keys().read_into(deck.section("sea"), w);
+    SceneKeys scene;
+    scene_keys().read_into(deck, scene);
+    // The water rests in the global frame; the beam's frame f is the root frame, so it must not turn.
+    if (!scene.root.angular_velocity_rad_s.isZero(0.0))
+      throw InputError({"pipe", std::nullopt, "sea", "a root that does not rotate"},
+                       where(deck, "root.angular_velocity_rad_s") + ": a pipe in the sea cannot rotate with its root (the water "
+                                                                     "is at rest in the global frame)");
+    setup.water = beam::SurroundingWater{.density_kg_m3 = w.density_kg_m3, .outer_diameter_m = p.outer_diameter_m,
+                                         .added_mass_coefficient = w.inertia_coefficient - 1.0,
+                                         .drag_coefficient = w.drag_coefficient,
+                                         .surface_z_m = w.surface_z_m - scene.root.position_m.z(),  // in the root frame
+                                         .current_m_s = w.current_m_s};
+  }
+  if (deck.has("tip_motion")) {
+    TipMotionKeys m;
+    tip_motion_keys().read_into(deck.section("tip_motion"), m);
+    if (p.tip_end == "free")
+      throw InputError({"pipe", std::nullopt, "tip_motion", "a held tip (pipe.tip_end: clamped or pinned)"},
+                       where(deck, "tip_motion") + ": only a held tip can be moved; set pipe.tip_end to clamped or pinned");
+    if (p.integrator != "generalized_alpha")
+      throw InputError({"pipe", std::nullopt, "pipe.integrator", "generalized_alpha"},
+                       where(deck, "pipe.integrator") + ": a prescribed tip motion needs the generalized_alpha integrator");
+    if (!(m.sway_direction.norm() > 0.0))
+      throw InputError({"pipe", std::nullopt, "tip_motion.sway_direction", "a non-zero vector"},
+                       where(deck, "tip_motion.sway_direction") + ": expected a non-zero direction");
+    setup.tip_motion = beam::RampAndSway{.stretch_m = m.stretch_m, .stretch_time_s = m.stretch_time_s,
+                                         .sway_amplitude_m = m.sway_amplitude_m, .sway_period_s = m.sway_period_s,
+                                         .sway_start_s = m.sway_start_s, .axis = Vec3::UnitZ(),  // the straight pipe's axis
+                                         .sway_direction = m.sway_direction.normalized()};
+  }
   return run_one_beam(deck, std::move(setup), p.segments, p.integrator, p.spectral_radius, "pipe", request, progress);
 }
 

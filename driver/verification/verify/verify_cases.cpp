@@ -26,6 +26,7 @@ void bench_multibody(std::FILE* out);
 void bench_startup(std::FILE* out);  // bench_startup.cpp
 void bench_turbine(std::FILE* out);    // bench_flexible_turbine.cpp
 void bench_stability(std::FILE* out);  // bench_stability.cpp
+void bench_riser(std::FILE* out);      // bench_riser.cpp
 std::vector<VerificationRow> verify_sea(std::FILE* out);  // verify_sea.cpp
 std::vector<VerificationRow> verify_pipe(std::FILE* out);  // verify_pipe.cpp
 void bench_hydro(std::FILE* out);
@@ -109,7 +110,7 @@ std::filesystem::path default_shared_dir() {
 }
 
 std::vector<std::string> benchmark_case_names() {
-  return {"coupling", "beam", "hydro", "waves", "aero", "multibody", "startup", "turbine", "stability"};
+  return {"coupling", "beam", "hydro", "waves", "aero", "multibody", "startup", "turbine", "stability", "riser"};
 }
 
 std::filesystem::path source_input(const std::string& relative) {
@@ -129,8 +130,9 @@ void run_benchmark_case(const std::string& name, std::FILE* out) {
   if (name == "startup") return bench_startup(out);
   if (name == "turbine") return bench_turbine(out);
   if (name == "stability") return bench_stability(out);
+  if (name == "riser") return bench_riser(out);
   if (name != "coupling") {
-    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody, startup, turbine, stability"}, fmt::format("unknown benchmark case '{}'", name));
+    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody, startup, turbine, stability, riser"}, fmt::format("unknown benchmark case '{}'", name));
   }
   const ToyProblem problem = study_problem();
   constexpr double kTmax = 200.0;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "fowtsim/beam/pipe_benchmarks.hpp"
+#include "fowtsim/beam/riser.hpp"
 #include "fowtsim/post/welch_psd.hpp"
 #include "verify/verify_cases.hpp"
 
@@ -145,6 +146,20 @@ std::vector<VerificationRow> verify_pipe(std::FILE* out) {
                           "Païdoussis vol. 1 §3.3.6"));
   rows.push_back(pipe_row("clamped-clamped divergence |u/2π − 1|", std::abs(clamped / (2.0 * std::numbers::pi) - 1.0), 2e-2,
                           "Païdoussis vol. 1 §3.3.6"));
+
+  // Seed §3.5.3's riser, cases (a)–(d) (modules/beam/riser.hpp; bounds as in riser_tests.cpp):
+  // the seed states its conclusions in words, checked here in numbers.
+  beam::riser::RiserRun riser[4];
+  for (int k = 0; k < 4; ++k) riser[k] = beam::riser::simulate(beam::riser::seed_case(static_cast<char>('a' + k)), 100, 1e-3, 11.0, {});
+  auto riser_peak = [&](int k) { return riser[k].max_bending_moment_n_m_overall; };
+  fmt::print(out, "Riser (seed §3.5.3, 100 volumes, Δt 1 ms, 11 s): max |M| (a) {:.4e}, (b) {:.4e}, (c) {:.4e}, (d) {:.4e} N·m; "
+                  "max deflection (a) {:.3f}, (b) {:.3f}, (c) {:.3f}, (d) {:.3f} m\n\n",
+             riser_peak(0), riser_peak(1), riser_peak(2), riser_peak(3), riser[0].max_deflection_m, riser[1].max_deflection_m, riser[2].max_deflection_m,
+             riser[3].max_deflection_m);
+  rows.push_back(pipe_row("riser max |M| (a)/(b): tension stiffens", riser_peak(0) / riser_peak(1), 0.8, "seed §3.5.3 (words; Fig. 3.12)"));
+  rows.push_back(pipe_row("riser |max |M| (c)/(b) − 1|: flow μ_v 1.07 hardly matters", std::abs(riser_peak(2) / riser_peak(1) - 1.0), 2e-2,
+                          "seed §3.5.3 (words; Fig. 3.11)"));
+  rows.push_back(pipe_row("riser max |M| (d)/(c): pressure raises bending", riser_peak(3) / riser_peak(2), 1.0 / 1.1, "seed §3.5.3 (words; Fig. 3.12)"));
   return rows;
 }
 

@@ -46,8 +46,12 @@ void DynamicStepper::step(const BeamInput& input, double dt, BeamState& state) {
     finish(0.0, state);
     return;
   }
+  if (!model_.free_tip() && (input.tip_displacement_m != state.tip_offset_m || !input.tip_velocity_m_s.isZero(0.0)))
+    throw InputError({"beam", std::nullopt, "integrator", "generalized_alpha"},
+                     "a held tip moved by a prescribed motion needs the generalized_alpha integrator");
   for (int i = 0; i < model_.node_count(); ++i) v0_.segment<6>(6 * i) = state.velocity[i];
   dt_ = dt;
+  tip_increment_.setZero();
   integrate_erk(input, state, dt);
   check_increments(state);
   commit(state);
@@ -91,7 +95,14 @@ AffineRootLoad DynamicStepper::prepare(const BeamInput& input, const FrameAccele
 
   w_damping_ = v0_ + ((1.0 - af) * dt) * a0_;
   w_stiffness_ = ((1.0 - af) * dt) * v0_ + (0.5 * (1.0 - af) * dt * dt) * a0_;
-  step_residual(model_, input, state, w_damping_, w_stiffness_, a0_, solution_);  // R, solved in place
+  // A held tip moved by the input: its trial motion at the balance time is known, its displacement
+  // (1 − αf) q1 = u_tip(t_bal) − u_tip(t) and its velocity u̇_tip(t_bal); it is a load on its neighbour.
+  const bool tip_moves = !model_.free_tip() && (input.tip_displacement_m != state.tip_offset_m ||
+                                                !input.tip_velocity_m_s.isZero(0.0));
+  tip_trial_ = {input.tip_displacement_m - state.tip_offset_m, input.tip_velocity_m_s};
+  tip_increment_ = tip_moves ? Vec3(tip_trial_.stiffness_m / (1.0 - af)) : Vec3::Zero();
+  step_residual(model_, input, state, w_damping_, w_stiffness_, a0_, solution_,  // R, solved in place
+                tip_moves ? &tip_trial_ : nullptr);
   weights_ = {1.0 - am, (1.0 - af) * gamma_ * dt, (1.0 - af) * beta_ * dt * dt};
   // A new motion does not carry a matrix over from another.
   matrix_rebuilt_ = fresh_motion || step_matrix_is_stale(state.step_matrix, weights_);
@@ -178,6 +189,7 @@ void DynamicStepper::commit(BeamState& state) {
     cache.weights = weights_;
   }
   update_base(q_, state);
+  state.tip_offset_m += tip_increment_;
   ++cache.age;
   cache.turned_rad += max_rotation_;
   for (int i = 0; i < n; ++i) {

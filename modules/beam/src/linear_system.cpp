@@ -5,6 +5,7 @@
 #include "flow_terms.hpp"
 #include "fowtsim/core/rotation.hpp"
 #include "section_mechanics.hpp"
+#include "water_terms.hpp"
 
 namespace fowtsim::beam {
 namespace {
@@ -80,6 +81,8 @@ void node_blocks(const BeamModel& model, const BeamInput& input, const BeamState
   if (model.flow)
     add_flow_node_terms(model, input, state, i, pressures.back(), inertia == Inertia::included, out.mass,
                         out.damping, out.stiffness, out.rhs);
+  if (model.water)
+    add_water_node_terms(model, input, state, i, inertia == Inertia::included, out.mass, out.damping, out.rhs);
 }
 
 // The pipe's face pressures (empty for a beam), in a workspace kept per thread so that a step

@@ -42,7 +42,7 @@ struct NodePose {
 // The base pose of node n, or of the held root (kRootEnd) or tip (kTipEnd).
 inline NodePose node_pose(const BeamModel& model, const BeamState& state, int n) {
   if (n == kRootEnd) return {model.root_position_m, model.root_orientation};
-  if (n == kTipEnd) return {model.tip_position_m, model.tip_orientation};
+  if (n == kTipEnd) return {model.tip_position_m + state.tip_offset_m, model.tip_orientation};
   return {state.position_m[n], state.orientation[n]};
 }
 

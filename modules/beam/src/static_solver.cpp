@@ -31,6 +31,7 @@ double increment_size(const VecX& q, double length) {
 StaticReport solve_static(const BeamModel& model, const BeamInput& input, BeamState& state,
                           const StaticOptions& options) {
   StaticReport report;
+  if (!model.free_tip()) state.tip_offset_m = input.tip_displacement_m;  // the held tip where the input puts it
   LinearizedBeam system;
   VecX q;
   for (int step = 1; step <= options.load_steps; ++step) {

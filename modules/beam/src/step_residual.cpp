@@ -8,6 +8,7 @@
 
 #include "flow_terms.hpp"
 #include "section_mechanics.hpp"
+#include "water_terms.hpp"
 
 namespace fowtsim::beam {
 namespace {
@@ -58,16 +59,19 @@ Vec6 node_residual(const BeamModel& model, const BeamInput& input, const BeamSta
   return out;
 }
 
-// The increments of a section's two ends from a nodal vector: a held end does not move, a pinned
-// end's ghost moves as u_g = −u, θ_g = θ of its node.
-Vec6 end_motion(const VecX& q, const SectionModel& sec, int end, int other) {
+// The increments of a section's two ends from a nodal vector: a held end does not move unless it
+// is a tip moved by `tip` (its translation; nullptr: at rest), a pinned end's ghost moves as
+// u_g = 2 u_end − u, θ_g = θ of its node (the mirror image through the end point).
+Vec6 end_motion(const VecX& q, const SectionModel& sec, int end, int other, const Vec3* tip = nullptr) {
   const auto node = [&](int n) { return n >= 0 ? Vec6(q.segment<6>(6 * n)) : Vec6::Zero(); };
-  return end_motion(sec, end, node(other), node(end));
+  Vec6 m = end_motion(sec, end, node(other), node(end));
+  if (tip && end == kTipEnd) m.head<3>() += (sec.pinned ? 2.0 : 1.0) * *tip;
+  return m;
 }
 
-// [u_a − u_b; θ_a; θ_b] of a nodal vector.
-Vec9 reduced_pair(const VecX& q, const SectionModel& sec) {
-  const Vec6 a = end_motion(q, sec, sec.inboard, sec.outboard), b = end_motion(q, sec, sec.outboard, sec.inboard);
+// [u_a − u_b; θ_a; θ_b] of a nodal vector, with the held tip's translation `tip` (nullptr: at rest).
+Vec9 reduced_pair(const VecX& q, const SectionModel& sec, const Vec3* tip = nullptr) {
+  const Vec6 a = end_motion(q, sec, sec.inboard, sec.outboard, tip), b = end_motion(q, sec, sec.outboard, sec.inboard, tip);
   Vec9 out;
   out << a.head<3>() - b.head<3>(), a.tail<3>(), b.tail<3>();
   return out;
@@ -82,15 +86,28 @@ void add_section_loads(const SectionModel& sec, const Vec12& loads, VecX& residu
 }  // namespace
 
 void step_residual(const BeamModel& model, const BeamInput& input, const BeamState& state,
-                   const VecX& w_c, const VecX& w_k, const VecX& a, VecX& residual) {
+                   const VecX& w_c, const VecX& w_k, const VecX& a, VecX& residual, const HeldTipTrial* tip) {
   for (int n = 0; n < model.node_count(); ++n)
     residual.segment<6>(6 * n) = node_residual(model, input, state, n, a.segment<6>(6 * n),
                                                w_c.segment<6>(6 * n), w_k.segment<6>(6 * n));
+  if (model.water) {  // the water's blocks (water_terms.hpp) applied to the trial vectors
+    Mat6 mass, damping;
+    Vec6 rhs;
+    for (int n = 0; n < model.node_count(); ++n) {
+      mass.setZero();
+      damping.setZero();
+      rhs.setZero();
+      add_water_node_terms(model, input, state, n, true, mass, damping, rhs);
+      residual.segment<6>(6 * n) += rhs - mass * a.segment<6>(6 * n) - damping * w_c.segment<6>(6 * n);
+    }
+  }
+  const Vec3* tip_k = tip ? &tip->stiffness_m : nullptr;
+  const Vec3* tip_c = tip ? &tip->damping_m_s : nullptr;
   NodePose pa, pb;
   if (!model.flow) {
     for (const SectionModel& sec : model.sections) {
       section_poses(model, state, sec, pa, pb);
-      add_section_loads(sec, section_residual_loads(sec, pa, pb, reduced_pair(w_k, sec), reduced_pair(w_c, sec)),
+      add_section_loads(sec, section_residual_loads(sec, pa, pb, reduced_pair(w_k, sec, tip_k), reduced_pair(w_c, sec, tip_c)),
                         residual);
     }
     return;
@@ -117,7 +134,7 @@ void step_residual(const BeamModel& model, const BeamInput& input, const BeamSta
     const SectionModel& sec = model.sections[j];
     section_poses(model, state, sec, pa, pb);
     const Vec6 offset = flow_section_offset(*model.flow, pressures[j]);
-    Vec12 loads = section_residual_loads(sec, pa, pb, reduced_pair(w_k, sec), reduced_pair(w_c, sec), &offset);
+    Vec12 loads = section_residual_loads(sec, pa, pb, reduced_pair(w_k, sec, tip_k), reduced_pair(w_c, sec, tip_c), &offset);
     flow_section_damping(*model.flow, sec, pa, pb, flow_damping);  // zero at a held end
     Vec12 rates;
     rates << end_motion(w_c, sec, sec.inboard, sec.outboard), end_motion(w_c, sec, sec.outboard, sec.inboard);

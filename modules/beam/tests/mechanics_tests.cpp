@@ -64,6 +64,13 @@ BeamModel tangent_test_model(int variant, int segments, double mass_damping = 0.
   if (variant == 4) def.tip_end = EndCondition::pinned;
   BeamModel model = discretise(def, segments);
   if (variant == 1 || variant == 2 || variant == 4) model.flow = general_pipe(segments, variant == 2).flow;
+  if (variant == 5) {  // a pipe held at both ends in water with a current: buoyancy, added mass, drag
+    def.tip_end = EndCondition::clamped;
+    model = discretise(def, segments);
+    model.flow = general_pipe(segments, false).flow;
+    model.water = SurroundingWater{.outer_diameter_m = 0.05, .added_mass_coefficient = 0.8, .drag_coefficient = 1.2,
+                                   .surface_z_m = 1e3, .current_m_s = Vec3(0.4, -0.2, 0.1)};
+  }
   return model;
 }
 
@@ -215,10 +222,11 @@ TEST_CASE("the one-pass step matrix and the matrix-free residual equal the assem
           "[unit][beam]") {
   // assemble_step_matrix builds m M + c C + k K without forming M, C, K apart, and step_residual
   // applies r − M a − C w_c − K w_k as vector formulas; both must agree with linearize to rounding.
-  const int variant = GENERATE(0, 1, 2, 3, 4);  // tangent_test_model
+  const int variant = GENERATE(0, 1, 2, 3, 4, 5);  // tangent_test_model (5: in water)
   const BeamModel model = tangent_test_model(variant, 6, 0.02);
   const BeamInput in = loaded_input(model);
-  const BeamState s = deformed(model);
+  BeamState s = deformed(model);
+  for (int n = 0; n < model.node_count(); ++n) s.velocity[n] << 0.1 * n, -0.3, 0.2, 0.01, 0.0, -0.02;  // the drag's base
   LinearizedBeam sys;
   linearize(model, in, s, Inertia::included, sys);
 

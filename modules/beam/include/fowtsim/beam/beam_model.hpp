@@ -15,6 +15,7 @@
 
 #include "fowtsim/beam/internal_flow.hpp"
 #include "fowtsim/beam/reference_line.hpp"
+#include "fowtsim/beam/surrounding_water.hpp"
 #include "fowtsim/core/types.hpp"
 
 namespace fowtsim::beam {
@@ -79,11 +80,13 @@ struct BeamModel {
   Vec3 root_position_m = Vec3::Zero();  // clamped root point in f [m]
   Mat3 root_orientation = Mat3::Identity();  // clamped root frame
   Vec3 tip_arm_m = Vec3::Zero();        // tip point − last node, in the last node's local frame [m]
-  Vec3 tip_position_m = Vec3::Zero();   // undeformed tip point in f [m]
+  Vec3 tip_position_m = Vec3::Zero();   // undeformed tip point in f [m]; a held tip may be moved from
+                                        // it (BeamInput::tip_displacement_m, BeamState::tip_offset_m)
   Mat3 tip_orientation = Mat3::Identity();
   double mass_damping_1_s = 0.0;        // μ_M
   double length_m = 0.0;
   std::optional<InternalFlow> flow;     // fluid flowing inside: a pipe (pipe.hpp); none for a beam
+  std::optional<SurroundingWater> water;  // buoyancy and Morison loads of still water around it; none in air
 
   int node_count() const { return static_cast<int>(nodes.size()); }
   bool free_tip() const { return sections.back().outboard != kTipEnd; }

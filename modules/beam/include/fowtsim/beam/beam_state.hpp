@@ -29,6 +29,11 @@ struct BeamInput {
   std::vector<Vec6> node_loads;  // [force N; moment N·m] on segment n, acting at its load arm
                                  // (empty = none); distributed loads integrated over the segment
   Vec6 tip_load = Vec6::Zero();  // [force; moment] at the tip point [N, N·m]
+  // Prescribed motion of a held (clamped or pinned) tip at the input time: its translation from the
+  // undeformed tip point and its velocity, in f [m, m/s] (seed 000 eqs. 3.66–3.67: a riser's top
+  // moved by the platform). Its orientation stays. A free tip ignores them; generalized_alpha only.
+  Vec3 tip_displacement_m = Vec3::Zero();
+  Vec3 tip_velocity_m_s = Vec3::Zero();
 };
 
 struct BeamState {
@@ -39,13 +44,16 @@ struct BeamState {
   std::vector<Vec6> acceleration;  // generalized-α's algorithmic acceleration, in f [m/s²; rad/s²]
   bool acceleration_valid = false;  // false: solved from M a = r − C v before the first step
   StepMatrixCache step_matrix;      // generalized-α's factored step matrix, reused while fresh
+  Vec3 tip_offset_m = Vec3::Zero();  // a held tip's translation from its undeformed point, in f [m]: part of
+                                     // the base configuration, advanced by each step to the prescribed motion
 };
 
 // Its field list (core/fields.hpp): a checkpoint or a copy continues bit-identically only with
 // the factored step matrix.
 template <class Archive>
 void fields(Archive& a, BeamState& s) {
-  a.io(s.time_s, s.position_m, s.orientation, s.velocity, s.acceleration, s.acceleration_valid, s.step_matrix);
+  a.io(s.time_s, s.position_m, s.orientation, s.velocity, s.acceleration, s.acceleration_valid, s.step_matrix,
+       s.tip_offset_m);
 }
 
 // Undeformed, at rest relative to f.

@@ -50,9 +50,16 @@ void assemble_step_matrix(const BeamModel& model, const BeamInput& input, const 
 // The residual of the locally linear equations at a trial motion, R = r − M a − C w_c − K w_k
 // (6 per node), evaluated without forming any matrix: every product is applied as the vector
 // formula it stands for, at a fraction of the cost of assembling the matrices.
+// A held tip moved by the caller (BeamInput::tip_displacement_m) takes part through `tip`: its
+// translation in the stiffness and damping trial vectors (the columns of the held end are not
+// unknowns, so its known motion is a load on its neighbour).
+struct HeldTipTrial {
+  Vec3 stiffness_m = Vec3::Zero();  // the tip's entry of w_k: its displacement from the base [m]
+  Vec3 damping_m_s = Vec3::Zero();  // the tip's entry of w_c: its velocity [m/s]
+};
 void step_residual(const BeamModel& model, const BeamInput& input, const BeamState& state,
                    const VecX& damping_vector, const VecX& stiffness_vector, const VecX& acceleration,
-                   VecX& residual);
+                   VecX& residual, const HeldTipTrial* tip = nullptr);
 
 // ∂R/∂s of step_residual when the frame acceleration grows by s·(da, dω̇) (both in f): the
 // inertial loads of that frame acceleration on every node at the trial stiffness vector w_k.

@@ -31,8 +31,8 @@ struct StaticReport {
   double final_increment = 0.0;
 };
 
-// Static equilibrium under `input` (dead loads, gravity, steady frame motion); throws
-// NumericalError if an iteration fails or does not converge.
+// Static equilibrium under `input` (dead loads, gravity, steady frame motion, a held tip moved to
+// input.tip_displacement_m); throws NumericalError if an iteration fails or does not converge.
 StaticReport solve_static(const BeamModel& model, const BeamInput& input, BeamState& state,
                           const StaticOptions& options = {});
 
@@ -134,6 +134,8 @@ class DynamicStepper {
   double beta_ = 0.25, gamma_ = 0.5;
   double max_rotation_ = 0.0;  // of the checked increments
   VecX v0_, a0_, q_, v1_, a1_, w_damping_, w_stiffness_, solution_, per_unit_;
+  HeldTipTrial tip_trial_;                // a held tip moved by the input (BeamInput::tip_displacement_m)
+  Vec3 tip_increment_ = Vec3::Zero();     // its translation over the step, folded into BeamState::tip_offset_m
   std::unique_ptr<Erk> erk_;
 };
 
