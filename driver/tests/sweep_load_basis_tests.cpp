@@ -68,22 +68,23 @@ TEST_CASE("load basis: event presets set the IEC wind event and the controller e
     FAIL("no case " << name);
     return cases.front();
   };
-  // DLC 2.3: EOG at V_r + 2 = 13.4 m/s from t = 120 s; grid loss at the gust's peak, T/2 = 5.25 s later.
+  // DLC 2.3: EOG at V_r + 2 = 13.4 m/s from t = 60 s (the transient's end); grid loss at the gust's
+  // peak, T/2 = 5.25 s later.
   const SweepCase& eog = find("dlc23_ws13.4_t5.25");
   CHECK(override_of(eog, "wind.model") == "power_law");
   CHECK(override_of(eog, "wind.shear_exponent") == "0.2");
   CHECK(override_of(eog, "wind.event.type") == "EOG");
-  CHECK(override_of(eog, "wind.event.start_s") == "120");
+  CHECK(override_of(eog, "wind.event.start_s") == "60");
   CHECK(override_of(eog, "wind.event.rotor_diameter_m") == "126");
-  CHECK(override_of(eog, "controller.events") == "[{type: grid_loss, at_s: 125.25}]");
-  CHECK(case_deck_text(spec, eog, "/tmp").find("  events: [{type: grid_loss, at_s: 125.25}]\n") != std::string::npos);
+  CHECK(override_of(eog, "controller.events") == "[{type: grid_loss, at_s: 65.25}]");
+  CHECK(case_deck_text(spec, eog, "/tmp").find("  events: [{type: grid_loss, at_s: 65.25}]\n") != std::string::npos);
   // DLC 1.5: the four shears at each speed.
   CHECK(override_of(find("dlc15_ws25_ewsh-"), "wind.event.type") == "EWS_horizontal");
   CHECK(override_of(find("dlc15_ws25_ewsh-"), "wind.event.sign") == "-1");
   // DLC 3.2: start-up from idling 10 s before the gust.
   const SweepCase& startup = find("dlc32_ws3_t-10");
   CHECK(override_of(startup, "controller.operating_mode") == "idling");
-  CHECK(override_of(startup, "controller.events") == "[{type: startup, at_s: 110}]");
+  CHECK(override_of(startup, "controller.events") == "[{type: startup, at_s: 50}]");
   // DLC 6.3: the turbulent 1-year EWM, V_1 = 0.8 V_ref = 40 m/s, at the extreme yaw error.
   const SweepCase& parked = find("dlc63_yaw20_s1");
   CHECK(parked.wind_speed_m_s.value() == Approx(40.0).epsilon(1e-15));

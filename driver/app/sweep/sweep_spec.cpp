@@ -187,7 +187,7 @@ SeaStateSpec read_sea_state(const io::ValidatedDeck& group, const std::vector<do
   return sea;
 }
 
-LoadCaseGroup read_group(const io::ValidatedDeck& g, const io::DeckNode& raw, Issues& issues) {
+LoadCaseGroup read_group(const io::ValidatedDeck& g, const io::DeckNode& raw, const TurbineClass& turbine, Issues& issues) {
   LoadCaseGroup group;
   group.location = g.location("");
   group.name = g.string("name");
@@ -228,6 +228,17 @@ LoadCaseGroup read_group(const io::ValidatedDeck& g, const io::DeckNode& raw, Is
   const bool extreme_wind = preset != nullptr && preset->wind.starts_with("turbulent EWM");
   if (extreme_wind && !group.wind_speeds_m_s.empty())
     issues.add(g, "wind_speeds_m_s", "wind speeds", fmt::format("none: {} blows the extreme wind model's speed ({})", group.preset, preset->wind));
+  // A preset's default speeds derive from the turbine's V_in, V_r, V_out; its gusts and shears from D.
+  const bool turbine_speeds = turbine.cut_in_m_s && turbine.rated_m_s && turbine.cut_out_m_s;
+  if (preset != nullptr && !extreme_wind && group.preset != "dlc6.4" && group.wind_speeds_m_s.empty() && !turbine_speeds)
+    issues.missing(g, "wind_speeds_m_s",
+                   fmt::format("the wind speeds of {}, or turbine.cut_in_m_s, rated_m_s and cut_out_m_s for its default ones", group.preset));
+  const bool wind_event = preset != nullptr && (preset->wind.find("EOG") != std::string_view::npos ||
+                                                preset->wind.find("EDC") != std::string_view::npos ||
+                                                preset->wind.find("ECD") != std::string_view::npos ||
+                                                preset->wind.find("EWS") != std::string_view::npos);
+  if (wind_event && !turbine.rotor_diameter_m)
+    issues.add(g, "preset", group.preset, "a spec whose turbine section gives rotor_diameter_m (the size of its gust or shear)");
   if (group.preset == "dlc6.4" && group.wind_speeds_m_s.empty())
     issues.missing(g, "wind_speeds_m_s", "the idling wind speeds of dlc6.4 (below 0.7 V_ref)");
   if (preset != nullptr && preset->events_per_year_needed() && group.events_per_year.empty())
@@ -333,7 +344,6 @@ SweepSpec read_sweep_spec(const std::filesystem::path& spec_path) {
       issues.add(s, "trim.average_s", fmt::format("{} s", spec.trim->average_s),
                  fmt::format("at most trim.duration_s ({} s)", spec.trim->duration_s));
   }
-
   if (deck.has("turbine")) {
     const io::ValidatedDeck t = deck.section("turbine");
     spec.turbine.wind_class = static_cast<int>(t.integer("wind_class"));
@@ -352,7 +362,7 @@ SweepSpec read_sweep_spec(const std::filesystem::path& spec_path) {
   const io::DeckNode& raw_groups = *raw_root.find("load_cases");
   for (std::size_t i = 0; i < deck.size("load_cases"); ++i) {
     const io::ValidatedDeck g = deck.section(fmt::format("load_cases[{}]", i));
-    spec.groups.push_back(read_group(g, raw_groups.items[i], issues));
+    spec.groups.push_back(read_group(g, raw_groups.items[i], spec.turbine, issues));
     if (!names.insert(spec.groups.back().name).second)
       issues.add(g, "name", spec.groups.back().name, "a name no other load-case group has");
   }

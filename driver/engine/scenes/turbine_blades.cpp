@@ -63,7 +63,7 @@ const DeckSection<BladesKeys>& blades_section() {
                                     .doc("factor on every sectional stiffness (1000: the stiff-blade check)"),
              &BladesKeys::stiffness_scale)
         .key("gauges_eta", Schema::sequence(Schema::number().at_least(0.0).at_most(1.0)).max_items(9).optional()
-                               .doc("span gauges: arclength fractions for Spn<k>FL/ML{x,y,z}b<b> (internal loads, blade frame)"),
+                               .doc("span gauges: arclength fractions for Spn<k>FL/ML{x,y,z}b<b> (internal loads in the local section frame, as ElastoDyn's)"),
              &BladesKeys::gauges_eta)
         .key("nodal_deflections", Schema::boolean().default_value(false)
                                       .doc("write every node's deflection B<b>N<nnn>_TD{x,y,z}r (BeamDyn's nodal names, root "
@@ -346,11 +346,14 @@ std::vector<ChannelInfo> TurbineBlades::channels() const {
     for (std::size_t g = 0; g < gauges_eta_.size(); ++g) {
       for (int i = 0; i < 3; ++i)
         c.push_back({fmt::format("Spn{}FL{}b{}", g + 1, axes[i], b), "kN",
-                     fmt::format("blade {} internal force at eta {} along {}_b (outboard on inboard)", b, gauges_eta_[g], axes[i]),
+                     fmt::format("blade {} internal force at eta {} along the local {} axis (the section's twisted, deflected "
+                                 "frame; outboard on inboard)", b, gauges_eta_[g], axes[i]),
                      "blades"});
       for (int i = 0; i < 3; ++i)
         c.push_back({fmt::format("Spn{}ML{}b{}", g + 1, axes[i], b), "kN-m",
-                     fmt::format("blade {} internal moment at eta {} about {}_b", b, gauges_eta_[g], axes[i]), "blades"});
+                     fmt::format("blade {} internal moment at eta {} about the local {} axis (the section's frame)", b,
+                                 gauges_eta_[g], axes[i]),
+                     "blades"});
     }
   }
   c.push_back({"RotThrust", "kN", "low-speed shaft thrust (ElastoDyn's): the rotor's load on the shaft along it, "
@@ -394,9 +397,14 @@ void TurbineBlades::channel_values(const Data& d, std::span<double> out) const {
         for (int i = 0; i < 3; ++i) out[k++] = d[i];
       }
     }
+    // ElastoDyn's Spn{k}FL/ML{x,y,z}b: in the local blade frame at the gauge — the section's own
+    // frame, turned from b by the structural twist and the deflection (as the RR blades' gauges).
     for (const double eta : gauges_eta_) {
       const Vec6 load = beam::section_load_at(model, s, eta);
-      for (int i = 0; i < 6; ++i) out[k++] = load[i] / 1e3;
+      const Mat3 local = beam::section_frame_at(model, s, eta);
+      const Vec3 force = local.transpose() * load.head<3>(), moment = local.transpose() * load.tail<3>();
+      for (int i = 0; i < 3; ++i) out[k++] = force[i] / 1e3;
+      for (int i = 0; i < 3; ++i) out[k++] = moment[i] / 1e3;
     }
   }
   const FlexibleRotor::HubLoad& hub = d.rotor.last;

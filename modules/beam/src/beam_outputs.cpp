@@ -36,8 +36,10 @@ BeamOutputs beam_outputs(const BeamModel& model, const BeamState& state) {
   return out;
 }
 
-Vec6 section_load_at(const BeamModel& model, const BeamState& state, double eta) {
-  // Section j sits between node j−1 and node j, at alpha of the way; pick the nearest to s.
+namespace {
+
+// Section j sits between node j−1 and node j, at alpha of the way: the one nearest to eta.
+const SectionModel& section_nearest(const BeamModel& model, double eta) {
   const double s = eta * model.length_m;
   std::size_t best = 0;
   double best_distance = std::numeric_limits<double>::infinity();
@@ -50,7 +52,22 @@ Vec6 section_load_at(const BeamModel& model, const BeamState& state, double eta)
       best = j;
     }
   }
-  const SectionModel& sec = model.sections[best];
+  return model.sections[best];
+}
+
+}  // namespace
+
+Mat3 section_frame_at(const BeamModel& model, const BeamState& state, double eta) {
+  const SectionModel& sec = section_nearest(model, eta);
+  NodePose a, b;
+  section_poses(model, state, sec, a, b);
+  SectionLinearization lin;
+  linearize_section(sec, a, b, lin);
+  return lin.orientation;  // the frame the section's strains and resultant are resolved in
+}
+
+Vec6 section_load_at(const BeamModel& model, const BeamState& state, double eta) {
+  const SectionModel& sec = section_nearest(model, eta);
   const Vec6 at_rest = Vec6::Zero();
   NodePose a, b;
   section_poses(model, state, sec, a, b);

@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "../src/section_mechanics.hpp"
+
 #include "fowtsim/beam/beam_outputs.hpp"
 #include "fowtsim/beam/linear_system.hpp"
 #include "fowtsim/beam/rotating_benchmarks.hpp"
@@ -145,5 +147,38 @@ TEST_CASE("a span gauge at the root is the root load, and strain energy is zero 
   gauge.tail<3>() += arm.cross(Vec3(gauge.head<3>()));
   CHECK((gauge - root).norm() <= 1e-9 * root.norm());
   CHECK(strain_energy(b.model, make_state(b.model)) == 0.0);
+}
+
+TEST_CASE("a span gauge in its section's frame is the section's stress resultant C [γ; κ]", "[unit][beam]") {
+  // What a strain gauge measures: without strain rates (velocities zeroed, so no damping part) the
+  // internal load turned into the section's own frame is the elastic resultant of its strains, at
+  // every section of the deflected Kane beam. Rounding only: one rotation of the same numbers.
+  Bent b;
+  for (Vec6& v : b.state.velocity) v.setZero();
+  for (const double eta : {0.0, 0.3, 0.77}) {
+    INFO("eta " << eta);
+    const Mat3 frame = section_frame_at(b.model, b.state, eta);
+    const Vec6 load = section_load_at(b.model, b.state, eta);
+    Vec6 local;
+    local << frame.transpose() * load.head<3>(), frame.transpose() * load.tail<3>();
+    // The section's own resultant, from its strains (the nearest section to eta, as the gauge takes).
+    const SectionModel* nearest = &b.model.sections.front();
+    for (const SectionModel& sec : b.model.sections) {
+      const double s_mid = (sec.inboard >= 0 ? b.model.nodes[sec.inboard].s_m : 0.0) + sec.alpha * sec.length_m;
+      const double s_best = (nearest->inboard >= 0 ? b.model.nodes[nearest->inboard].s_m : 0.0) + nearest->alpha * nearest->length_m;
+      if (std::abs(s_mid - eta * b.model.length_m) < std::abs(s_best - eta * b.model.length_m)) nearest = &sec;
+    }
+    NodePose pa, pb;
+    section_poses(b.model, b.state, *nearest, pa, pb);
+    SectionLinearization lin;
+    linearize_section(*nearest, pa, pb, lin);
+    CHECK((frame - lin.orientation).norm() == 0.0);
+    // The outboard part pulls on the inboard: +S, force and moment about the section point.
+    CHECK((local - lin.resultant).norm() <= 1e-10 * lin.resultant.norm());
+  }
+  // A frame, orthonormal, and turned from the root's by the deflection: not the root frame outboard.
+  const Mat3 tip_frame = section_frame_at(b.model, b.state, 0.9);
+  CHECK((tip_frame.transpose() * tip_frame - Mat3::Identity()).norm() < 1e-14);
+  CHECK((tip_frame - b.model.root_orientation).norm() > 1e-3);
   CHECK(strain_energy(b.model, b.state) > 0.0);
 }

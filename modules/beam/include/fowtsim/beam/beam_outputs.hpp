@@ -21,6 +21,11 @@ BeamOutputs beam_outputs(const BeamModel& model, const BeamState& state);
 // damping included, in f. At the root it is the root load.
 Vec6 section_load_at(const BeamModel& model, const BeamState& state, double eta);
 
+// The frame of that section (columns in f): the frame its strains and stress resultant are resolved
+// in, between the two nodes' frames — the section's own twisted and deflected frame, axis 3 along
+// the reference line (ElastoDyn's local blade frame n at a span gauge: its loads are Rᵀ F, Rᵀ M).
+Mat3 section_frame_at(const BeamModel& model, const BeamState& state, double eta);
+
 // Elastic strain energy Σ_j ½ Δs_j [γ; κ]ᵀ C [γ; κ] of the sections [J].
 double strain_energy(const BeamModel& model, const BeamState& state);
 
