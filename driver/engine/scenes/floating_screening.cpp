@@ -90,89 +90,153 @@ struct Controller {
   }
 };
 
+// The static balance: every acceleration zero, by block Gauss–Seidel — the rotor's torque balance
+// in its one unknown (bracketed, then Brent-like secant/bisection: robust wherever a root exists),
+// then the platform and elastic coordinates by Newton's method on a central-difference Jacobian
+// (the catenary's and hydrostatics' curvature), repeated until neither moves: the two couple only
+// through the rotor's inflow and tilt, so each pass gains about two digits.
 class Balance {
  public:
-  Balance(FloatingScene& scene, FloatingState& s, const std::vector<int>& dofs) : scene_(scene), s_(s), dofs_(dofs) {}
+  Balance(FloatingScene& scene, FloatingState& s, const std::vector<int>& dofs) : scene_(scene), s_(s), dofs_(dofs) {
+    for (std::size_t i = 0; i < dofs_.size(); ++i) {
+      if (dofs_[i] == multibody::kRotor) rotor_ = static_cast<int>(i);
+      else coordinates_.push_back(static_cast<int>(i));
+      if (dofs_[i] == multibody::kGenerator) generator_ = static_cast<int>(i);
+    }
+  }
 
-  // Newton's method on the accelerations, central-difference Jacobian; returns the iterations, or
-  // throws NumericalError when 40 do not bring the step below 1e-8 (m, rad, rad/s).
+  // Returns the evaluations' Newton iterations; NumericalError when 30 passes do not converge or the
+  // rotor's torque has no root in its range.
   int solve(RotorUnknown unknown, const Controller& c, double rotor_speed, double pitch) {
     unknown_ = unknown;
     controller_ = &c;
     rotor_speed_ = rotor_speed;
     pitch_ = pitch;
-    std::vector<int> rows;  // coordinates with an equation; the rotor azimuth is not one
-    for (std::size_t i = 0; i < dofs_.size(); ++i)
-      if (dofs_[i] != multibody::kRotor || unknown != RotorUnknown::none) rows.push_back(static_cast<int>(i));
-    const auto m = static_cast<Eigen::Index>(rows.size());
-    auto residual = [&](const Eigen::VectorXd& x) {
-      set(x);
-      const Eigen::VectorXd a = scene_.accelerations(0.0, s_, {});
-      Eigen::VectorXd r(m);
-      for (Eigen::Index i = 0; i < m; ++i) r[i] = a[rows[static_cast<std::size_t>(i)]];
-      return r;
-    };
-    base_ = s_.body;
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(m);  // the coordinates' changes, then the rotor unknown
-    rotor_row_ = -1;
-    for (Eigen::Index i = 0; i < m; ++i)
-      if (dofs_[static_cast<std::size_t>(rows[static_cast<std::size_t>(i)])] == multibody::kRotor) rotor_row_ = static_cast<int>(i);
-    rows_ = rows;
-    if (rotor_row_ >= 0) x[rotor_row_] = unknown == RotorUnknown::speed ? rotor_speed : pitch;
-    constexpr double h = 1e-4;  // [m, rad, rad/s], as linearised_system
-    for (int iteration = 1; iteration <= 40; ++iteration) {
-      const Eigen::VectorXd r = residual(x);
-      Eigen::MatrixXd j(m, m);
-      for (Eigen::Index k = 0; k < m; ++k) {
-        Eigen::VectorXd plus = x, minus = x;
-        plus[k] += h;
-        minus[k] -= h;
-        j.col(k) = (residual(plus) - residual(minus)) / (2.0 * h);
-      }
-      Eigen::VectorXd step = j.fullPivLu().solve(-r);
-      // At most 5 m (rad, rad/s) a step: the catenary's and BEM's curvature far from the start.
-      const double largest = step.cwiseAbs().maxCoeff();
-      if (largest > 5.0) step *= 5.0 / largest;
-      if (rotor_row_ >= 0 && unknown == RotorUnknown::pitch) step[rotor_row_] = std::clamp(step[rotor_row_], -0.1, 0.1);
-      x += step;
-      if (!step.allFinite()) break;
-      if (step.cwiseAbs().maxCoeff() < 1e-8) {
-        set(x);
-        return iteration;
-      }
+    apply();
+    // A flexible shaft's spring is internal to the drivetrain: the balance of the rotor and the
+    // generator together, J_r a_r + J_g a_g = Q_aero − N T_g, is the rotor's equation, with the
+    // inertias' ratio J_g/J_r = −(∂a_r/∂θ_g)/(∂a_g/∂θ_g) from the spring's pull on both.
+    if (generator_ >= 0 && unknown_ != RotorUnknown::none) {
+      const multibody::State base = s_.body;
+      displace(s_.body, multibody::kGenerator, 1e-4);
+      const Eigen::VectorXd plus = scene_.accelerations(0.0, s_, {});
+      s_.body = base;
+      displace(s_.body, multibody::kGenerator, -1e-4);
+      const Eigen::VectorXd minus = scene_.accelerations(0.0, s_, {});
+      s_.body = base;
+      generator_weight_ = -(plus[rotor_] - minus[rotor_]) / (plus[generator_] - minus[generator_]);
+    }
+    int iterations = 0;
+    for (int pass = 0; pass < 30; ++pass) {
+      const double before = unknown_value();
+      if (unknown_ != RotorUnknown::none) solve_rotor();
+      const double platform_step = solve_coordinates(iterations);
+      if (platform_step < 1e-8 && std::abs(unknown_value() - before) < 1e-9) return iterations;
     }
     throw NumericalError({"screen", 0.0, "operating point", "check the deck's wind, controller and mooring"},
-                         "the static balance (every acceleration zero) did not converge in 40 Newton iterations");
+                         "the static balance (every acceleration zero) did not converge in 30 passes");
   }
   double rotor_speed() const { return rotor_speed_; }
   double pitch() const { return pitch_; }
 
  private:
-  void set(const Eigen::VectorXd& x) {
-    multibody::State b = base_;
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-      const int k = dofs_[static_cast<std::size_t>(rows_[i])];
-      if (k != multibody::kRotor) displace(b, k, x[static_cast<Eigen::Index>(i)]);
-    }
-    if (rotor_row_ >= 0) {
-      if (unknown_ == RotorUnknown::speed) rotor_speed_ = x[rotor_row_];
-      else pitch_ = x[rotor_row_];
-    }
-    b.rotor_speed_rad_s = rotor_speed_;
-    b.generator_speed_rad_s = rotor_speed_;
-    b.blade_pitch_rad.fill(pitch_);
-    s_.body = b;
+  double unknown_value() const { return unknown_ == RotorUnknown::pitch ? pitch_ : rotor_speed_; }
+  // The demands and speeds of the present unknowns on the state.
+  void apply() {
+    s_.body.rotor_speed_rad_s = rotor_speed_;
+    s_.body.generator_speed_rad_s = rotor_speed_;
+    s_.body.blade_pitch_rad.fill(pitch_);
     s_.held.pitch_rad = pitch_;
     if (controller_->present)
       s_.held.generator_torque_N_m = controller_->torque(controller_->gearbox_ratio * rotor_speed_, pitch_);
+  }
+  double rotor_acceleration(double value) {
+    (unknown_ == RotorUnknown::pitch ? pitch_ : rotor_speed_) = value;
+    apply();
+    const Eigen::VectorXd a = scene_.accelerations(0.0, s_, {});
+    return a[rotor_] + (generator_ >= 0 ? generator_weight_ * a[generator_] : 0.0);
+  }
+  // The rotor's acceleration falls with pitch (above rated) and with speed (the torque law rises,
+  // the aerodynamic torque falls past the optimum): a bracket by doubling steps, then regula falsi
+  // with bisection (Illinois) to 1e-12 rad or rad/s.
+  void solve_rotor() {
+    const bool pitch = unknown_ == RotorUnknown::pitch;
+    const double lo_limit = pitch ? -0.5 : 1e-3, hi_limit = pitch ? 1.5 : 5.0;  // [rad], [rad/s]
+    double x0 = unknown_value(), f0 = rotor_acceleration(x0);
+    double step = pitch ? 0.02 : 0.05, x1 = x0, f1 = f0;
+    while (f0 * f1 > 0.0) {
+      x1 = std::clamp(f0 > 0.0 ? x1 + step : x1 - step, lo_limit, hi_limit);
+      f1 = rotor_acceleration(x1);
+      if ((x1 == lo_limit || x1 == hi_limit) && f0 * f1 > 0.0)
+        throw NumericalError({"screen", 0.0, "operating point", "a wind speed the controller can balance"},
+                             pitch ? "no blade pitch balances the rated generator torque" : "no rotor speed balances the torque schedule");
+      step *= 2.0;
+    }
+    double a = x0, fa = f0, b = x1, fb = f1;
+    int side = 0;
+    for (int i = 0; i < 100 && std::abs(b - a) > 1e-12; ++i) {
+      const double x = (a * fb - b * fa) / (fb - fa);
+      const double fx = rotor_acceleration(x);
+      if (fx == 0.0) {
+        a = b = x;
+        break;
+      }
+      if (fx * fb < 0.0) {
+        a = b;
+        fa = fb;
+        if (side == -1) fa *= 0.5;
+        side = -1;
+      } else {
+        if (side == 1) fa *= 0.5;
+        side = 1;
+      }
+      b = x;
+      fb = fx;
+    }
+    rotor_acceleration(b);
+  }
+  // Newton's method on the coordinates (the rotor held); returns the last step's largest entry.
+  double solve_coordinates(int& iterations) {
+    const auto m = static_cast<Eigen::Index>(coordinates_.size());
+    auto residual = [&]() {
+      const Eigen::VectorXd a = scene_.accelerations(0.0, s_, {});
+      Eigen::VectorXd r(m);
+      for (Eigen::Index i = 0; i < m; ++i) r[i] = a[coordinates_[static_cast<std::size_t>(i)]];
+      return r;
+    };
+    constexpr double h = 1e-4;  // [m, rad], as linearised_system
+    double largest = 0.0;
+    for (int iteration = 0; iteration < 20; ++iteration) {
+      ++iterations;
+      const multibody::State base = s_.body;
+      const Eigen::VectorXd r = residual();
+      Eigen::MatrixXd j(m, m);
+      for (Eigen::Index k = 0; k < m; ++k) {
+        const int dof = dofs_[static_cast<std::size_t>(coordinates_[static_cast<std::size_t>(k)])];
+        displace(s_.body, dof, h);
+        const Eigen::VectorXd plus = residual();
+        s_.body = base;
+        displace(s_.body, dof, -h);
+        j.col(k) = (plus - residual()) / (2.0 * h);
+        s_.body = base;
+      }
+      Eigen::VectorXd step = j.fullPivLu().solve(-r);
+      largest = step.cwiseAbs().maxCoeff();
+      if (!std::isfinite(largest)) break;
+      if (largest > 5.0) step *= 5.0 / largest;  // at most 5 m (rad) a step, far from the start
+      for (Eigen::Index k = 0; k < m; ++k) displace(s_.body, dofs_[static_cast<std::size_t>(coordinates_[static_cast<std::size_t>(k)])], step[k]);
+      if (largest < 1e-8) return largest;
+      if (largest < 1e-4) return largest;  // the rotor's balance moves next; the next pass polishes
+    }
+    return largest;
   }
 
   FloatingScene& scene_;
   FloatingState& s_;
   const std::vector<int>& dofs_;
-  multibody::State base_;
-  std::vector<int> rows_;
-  int rotor_row_ = -1;
+  int rotor_ = -1, generator_ = -1;
+  double generator_weight_ = 0.0;  // J_g/J_r of a flexible shaft
+  std::vector<int> coordinates_;  // indices into dofs_ other than the rotor's azimuth
   RotorUnknown unknown_ = RotorUnknown::none;
   const Controller* controller_ = nullptr;
   double rotor_speed_ = 0.0, pitch_ = 0.0;
@@ -278,17 +342,24 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
   const control::BaselineParams& cp = controller.params;
   const double min_pitch = controller.present && cp.pitch != control::PitchLaw::fixed ? cp.min_pitch_rad : initial_pitch;
   if (!controller.present) s.held.generator_torque_N_m = 0.0;
-  op.newton_iterations = balance.solve(unknown, controller, initial.rotor_speed_rad_s, min_pitch);
-  op.region = unknown == RotorUnknown::none ? "parked" : controller.present ? "region 2" : "free rotor";
-  // Above rated the PI holds the generator at its reference speed and the pitch balances the torque.
+  // Above rated the PI holds the generator at its reference speed and the pitch balances the
+  // torque: tried first; it stands when that pitch is above the minimum. Below rated (or where no
+  // pitch balances the rated torque) the rotor speed balances the torque schedule at minimum pitch.
   const bool pitch_loop = controller.present && cp.pitch == control::PitchLaw::baseline;
-  if (pitch_loop && unknown == RotorUnknown::speed &&
-      controller.gearbox_ratio * balance.rotor_speed() > cp.reference_speed_rad_s) {
-    s.body = initial;
-    op.newton_iterations += balance.solve(RotorUnknown::pitch, controller, cp.reference_speed_rad_s / controller.gearbox_ratio, 0.1);
-    op.region = "region 3";
+  bool region3 = false;
+  if (pitch_loop && unknown == RotorUnknown::speed) {
+    try {
+      op.newton_iterations = balance.solve(RotorUnknown::pitch, controller, cp.reference_speed_rad_s / controller.gearbox_ratio, 0.1);
+      region3 = balance.pitch() > min_pitch;
+    } catch (const NumericalError&) {
+      region3 = false;
+    }
   }
-  const bool region3 = op.region == "region 3";
+  if (!region3) {
+    s.body = initial;
+    op.newton_iterations += balance.solve(unknown, controller, initial.rotor_speed_rad_s, min_pitch);
+  }
+  op.region = region3 ? "region 3" : unknown == RotorUnknown::none ? "parked" : controller.present ? "region 2" : "free rotor";
   op.rotor_speed_rpm = s.body.rotor_speed_rad_s * 30.0 / kPi;
   op.pitch_deg = s.held.pitch_rad * 180.0 / kPi;
   op.generator_torque_N_m = s.held.generator_torque_N_m;
