@@ -48,6 +48,14 @@ io::ValidatedDeck linearisation_deck(io::LoadedDeck deck, const std::vector<std:
         settings.push_back("wind.model=power_law");
       }
     }
+  // The linearisation holds the radiation memory (A(∞) only; A(ω) − A(∞) and B(ω) enter per
+  // frequency): the shortest kernel window spares the scene its set-up (seconds of a 60-s window).
+  if (const io::DeckNode* hydro = deck.root.find("hydro"); hydro && hydro->find("potential_flow")) {
+    const io::DeckNode* dt = deck.root.find("simulation") ? deck.root.find("simulation")->find("dt_s") : nullptr;
+    const double window = std::max(1.0, 4.0 * (dt ? std::stod(dt->scalar) : 0.0));
+    settings.push_back("hydro.potential_flow.radiation=convolution");
+    settings.push_back(fmt::format("hydro.potential_flow.radiation_window_s={}", window));
+  }
   io::apply_settings(deck, settings);
   return io::validate(floating_scene_schema(), std::move(deck));
 }
