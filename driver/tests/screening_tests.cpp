@@ -8,6 +8,7 @@
 #include <fstream>
 #include <numbers>
 #include <numeric>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -20,6 +21,9 @@
 #include "run/run_scene.hpp"
 #include "run_request.hpp"
 #include "scenes/floating_screening.hpp"
+#include "sweep/case_expansion.hpp"
+#include "sweep/frequency_domain_screening.hpp"
+#include "sweep/sweep_spec.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -177,4 +181,49 @@ TEST_CASE("screening: decks it cannot linearise are refused with the reason", "[
                                      std::filesystem::path("screen.csv"), sink),
                   InputError);
   std::fclose(sink);
+}
+
+TEST_CASE("sweep --frequency-domain ranks the cases by their screened tower-base moment", "[unit][screening]") {
+  const auto dir = testing::scratch_dir("screening_sweep");
+  const auto spec_path = dir / "spec.yaml";
+  std::ofstream(spec_path) << "sweep:\n  name: fd_rank\n  base_deck: "
+                           << (testing::source_dir() / "inputs/oc3_hywind/turbine_ntm_12mps_irregular.yaml").string()
+                           << "\n  output_dir: " << (dir / "out").string() << "\n"
+                           << "load_cases:\n  - name: dlc12\n    preset: dlc1.2\n    wind_speeds_m_s: [8, 18]\n    seeds: 1\n"
+                           << "    sea_state: {hs_m: 2.0, tp_s: 8.0}\n"
+                           << "load_table:\n  channels: [TwrBsMyt]\n";
+  const sweep::SweepSpec spec = sweep::read_sweep_spec(spec_path);
+  const std::vector<sweep::SweepCase> cases = sweep::expand_cases(spec, sweep::read_base_deck_facts(spec.base_deck));
+  REQUIRE(cases.size() == 2);
+  std::FILE* sink = std::tmpfile();
+  CHECK(sweep::screen_sweep(sink, spec, cases) == 0);
+  std::fclose(sink);
+  // One row per case, ranked: the larger σ(TwrBsMyt) first; each the same as `fowtsim screen` of
+  // its own case deck (the base deck with its keys), to the digit the table writes.
+  std::ifstream csv(dir / "out/frequency_domain_screening.csv");
+  std::string header, first, second;
+  std::getline(csv, header);
+  std::getline(csv, first);
+  std::getline(csv, second);
+  CHECK(header.find("std_TwrBsMyt") != std::string::npos);
+  auto field = [&](const std::string& line, const std::string& name) {
+    std::vector<std::string> names, values;
+    std::stringstream h(header), l(line);
+    for (std::string x; std::getline(h, x, ',');) names.push_back(x);
+    for (std::string x; std::getline(l, x, ',');) values.push_back(x);
+    const auto i = static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+    REQUIRE(i < values.size());
+    return values[i];
+  };
+  CHECK(field(first, "rank") == "1");
+  CHECK(field(second, "rank") == "2");
+  CHECK(std::stod(field(first, "std_TwrBsMyt")) >= std::stod(field(second, "std_TwrBsMyt")));
+  for (const std::string& row : {first, second}) {
+    const auto it = std::find_if(cases.begin(), cases.end(), [&](const sweep::SweepCase& c) { return c.name == field(row, "case"); });
+    REQUIRE(it != cases.end());
+    std::vector<std::string> settings;
+    for (const sweep::DeckOverride& o : it->overrides) settings.push_back(o.key_path + "=" + o.yaml_value);
+    const ScreeningResult alone = screen_floating(spec.base_deck, settings);
+    CHECK(std::stod(field(row, "std_TwrBsMyt")) == Approx(alone.std_total[channel(alone, "TwrBsMyt")]).epsilon(1e-5));
+  }
 }

@@ -136,9 +136,11 @@ class Balance {
     }
     int iterations = 0;
     for (int pass = 0; pass < 30; ++pass) {
+      // The coordinates first: the rotor's acceleration is relative to the nacelle, whose own
+      // acceleration (a flexible tower's vibration) it carries until they are balanced.
+      const double platform_step = solve_coordinates(iterations);
       const double before = unknown_value();
       if (unknown_ != RotorUnknown::none) solve_rotor();
-      const double platform_step = solve_coordinates(iterations);
       if (platform_step < 1e-8 && std::abs(unknown_value() - before) < 1e-9) return iterations;
     }
     throw NumericalError({"screen", 0.0, "operating point", "check the deck's wind, controller and mooring"},
