@@ -98,13 +98,20 @@ TEST_CASE("screening: the static balance finds the steady operating points of th
     // The PI's reference speed PC_RefSpd = 122.9096 rad/s over the gearbox 97, exactly.
     CHECK(r.operating_point.rotor_speed_rpm == Approx(122.9096 / 97.0 * 30.0 / std::numbers::pi).epsilon(1e-9));
   }
-  // Below rated: the torque schedule k ω² meets the aerodynamic torque at pitch 0. NREL/TP-500-38060
-  // Table 9-1's 8 m/s point (the land-based rotor): 9.16 rpm; measured 9.143 rpm on the spar
-  // (its 2.7° tilt). 1 % keeps 5× that.
-  const ScreeningResult below = screen_floating(deck, {"wind.speed_m_s=8"});
-  CHECK(below.operating_point.region == "region 2");
-  CHECK(below.operating_point.rotor_speed_rpm == Approx(9.16).epsilon(0.01));
-  CHECK(below.operating_point.pitch_deg == 0.0);
+  // Below rated: the torque schedule meets the aerodynamic torque at pitch 0. The published
+  // steady rotor speeds (PUBLISHED.md, welib NREL5MW_Oper.csv: 7.50, 10.26, 11.87 rpm at 5, 9,
+  // 11 m/s; land-based): measured +0.04 %, +0.1 %, 0.0 % on the spar (its 1–5° tilt). 1 % is the
+  // spread of the published sources (1–2 %) and 10× the largest.
+  const struct {
+    double wind, rpm;
+  } below[] = {{5.0, 7.50}, {9.0, 10.26}, {11.0, 11.87}};
+  for (const auto& p : below) {
+    const ScreeningResult r = screen_floating(deck, {fmt::format("wind.speed_m_s={}", p.wind)});
+    INFO(p.wind << " m/s: " << r.operating_point.rotor_speed_rpm << " rpm");
+    CHECK(r.operating_point.region == "region 2");
+    CHECK(r.operating_point.rotor_speed_rpm == Approx(p.rpm).epsilon(0.01));
+    CHECK(r.operating_point.pitch_deg == 0.0);
+  }
 }
 
 namespace {

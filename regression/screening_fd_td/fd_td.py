@@ -136,6 +136,8 @@ def plot(outdir, rows):
             ax.loglog(fd["frequency_hz"], fd["psd"][i], "C3", lw=1.5, label="frequency domain")
             ax.set_title(f"{c} [{fd['units'][i].decode() if isinstance(fd['units'][i], bytes) else fd['units'][i]}]")
             ax.set_xlim(2e-3, 0.5)
+            top = max(np.max(p[1:]) for f, p in (spectra[k] for spectra in td_psd))
+            ax.set_ylim(1e-6 * top, 10.0 * top)
             ax.set_xlabel("frequency [Hz]")
             ax.set_ylabel("PSD [unit²/Hz]")
             ax.grid(True, which="both", alpha=0.3)

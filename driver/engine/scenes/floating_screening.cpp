@@ -307,9 +307,9 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
   std::optional<HydroDeck> hydro;
   std::optional<RadiationCoefficients> radiation;
   PlatformStrips strips;
-  if (source.has("hydro")) {
-    hydro = read_hydro_deck(source.section("hydro"), source.number("simulation.dt_s"));
-    radiation = radiation_coefficients(source.section("hydro"), hydro->params);
+  if (deck.has("hydro")) {  // the linearisation's: its radiation kernel is the short one
+    hydro = read_hydro_deck(deck.section("hydro"), deck.number("simulation.dt_s"));
+    radiation = radiation_coefficients(deck.section("hydro"), hydro->params);
     strips = platform_strips(hydro->params);
   }
 
