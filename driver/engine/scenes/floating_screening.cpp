@@ -289,8 +289,6 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
   const bool with_rotor = source.has("aero");
   result.outputs = screening_channels(with_rotor);
   const io::ValidatedDeck deck = linearisation_deck(loaded, result.outputs);
-  FloatingScene scene(deck);
-  for (const ChannelInfo& c : scene.written()) result.units.push_back(c.unit);
 
   // The sea and wind screened, from the deck as written.
   const waves::WaveParams sea = source.has("waves") ? wave_params(source.section("waves")) : waves::WaveParams{};
@@ -326,6 +324,9 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
     if (b->generator == control::GeneratorLaw::simple_vs) controller.simple = control::simple_vs_curve(b->simple_vs);
     controller.gearbox_ratio = source.number("structure.drivetrain.gearbox_ratio");
   }
+  // The scene last: a deck the screening refuses stops above, before its set-up.
+  FloatingScene scene(deck);
+  for (const ChannelInfo& c : scene.written()) result.units.push_back(c.unit);
   result.seconds_set_up = seconds_since(start);
 
   // ── The operating point ────────────────────────────────────────────────────────────────────────
