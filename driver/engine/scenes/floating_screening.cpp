@@ -599,10 +599,10 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
     }
     return change;
   };
-  // The drag linearisation converges on every 4th frequency (2 % apart: σ is an integral over the
+  // The drag linearisation converges on every 8th frequency (4 % apart: σ is an integral over the
   // broad relative-velocity spectrum), to 1 % of every strip's σ (the linear drag coefficient is
   // proportional to it); then one pass over the whole grid.
-  constexpr std::size_t kCoarse = 4;
+  constexpr std::size_t kCoarse = 8;
   for (int iteration = 1; ns > 0 && iteration <= options.max_drag_iterations; ++iteration) {
     result.drag_iterations = iteration;
     solve(kCoarse);
