@@ -40,6 +40,10 @@ void write_hdf5(const std::filesystem::path& path, const std::filesystem::path& 
   write_doubles(file.get(), "mode_frequency_hz", frequency);
   write_doubles(file.get(), "mode_damping_ratio", damping);
   write_strings(file.get(), "mode_dominant", dominant);
+  Eigen::MatrixXd shapes(static_cast<Eigen::Index>(r.modes.size()), static_cast<Eigen::Index>(r.coordinates.size()));
+  for (std::size_t k = 0; k < r.modes.size(); ++k) shapes.row(static_cast<Eigen::Index>(k)) = r.modes[k].shape.transpose();
+  write_matrix(file.get(), "mode_shapes", shapes);
+  write_strings(file.get(), "mode_coordinates", r.coordinates);
   attribute(file.get(), "deck", deck.string());
   attribute(file.get(), "region", r.operating_point.region);
   attribute(file.get(), "wind_speed_m_s", r.operating_point.wind_speed_m_s);

@@ -6,7 +6,8 @@
 //   frequency_hz, wave_spectrum (m²/Hz), wind_spectrum (rotor-effective, m²/s²/Hz), channels,
 //   units (strings), psd (channels × frequencies, unit²/Hz), wave_rao_re/_im (per m of amplitude),
 //   wind_rao_re/_im (per m/s), mean, std_waves, std_wind, std_total; mode_frequency_hz,
-//   mode_damping_ratio, mode_dominant; attributes deck, region, wind speed, Hs, Tp.
+//   mode_damping_ratio, mode_dominant, mode_shapes (modes × mode_coordinates, m and rad, largest
+//   entry 1); attributes deck, region, wind speed, Hs, Tp.
 #include <cstdio>
 #include <filesystem>
 #include <optional>

@@ -642,6 +642,7 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
     if (nc >= 2) v.push_back("PitchIntegral");
     return v;
   }();
+  result.coordinates.assign(names.begin(), names.begin() + n);
   Eigen::EigenSolver<Eigen::MatrixXd> solver(system_at(0.0));
   const Eigen::VectorXcd first = solver.eigenvalues();
   const double resolution = 1e-6 * first.cwiseAbs().maxCoeff();
@@ -664,6 +665,7 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
     Eigen::Index largest = 0;
     vector.head(n).cwiseAbs().maxCoeff(&largest);
     mode.dominant = names[static_cast<std::size_t>(largest)];
+    mode.shape = (vector.head(n) / vector[largest]).real();
     result.modes.push_back(mode);
   }
   std::sort(result.modes.begin(), result.modes.end(),

@@ -50,11 +50,13 @@ struct ScreeningMode {
   double frequency_hz = 0.0;   // undamped natural frequency |λ|/2π of the coupled closed-loop model
   double damping_ratio = 0.0;  // −Re λ/|λ|, radiation and drag damping at the mode's own frequency
   std::string dominant;        // the coordinate with the largest entry of the eigenvector
+  Eigen::VectorXd shape;       // its displacement part (ScreeningResult::coordinates), phase-aligned on that entry, which is 1
 };
 
 struct ScreeningResult {
   ScreeningOperatingPoint operating_point;
   std::vector<ScreeningMode> modes;                 // by frequency
+  std::vector<std::string> coordinates;             // of the mode shapes: PtfmSurge … (m, rad), Azimuth, tower modes
   std::vector<std::string> outputs, units;          // channel names (the time domain's) and units
   std::vector<double> mean;                         // the channels at the operating point
   std::vector<double> frequency_hz;
