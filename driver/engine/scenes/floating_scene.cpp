@@ -60,8 +60,12 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
   void loads(double t, const multibody::State& s, multibody::AppliedLoads& out) override {
     sea_.evaluate(t, platform_motion(s), *sea_data_);
     const Vec6 load = sea_.platform_load(*sea_data_);
-    out.platform_force_N += load.head<3>() + offsets_.platform_load.head<3>();
-    out.platform_moment_N_m += load.tail<3>() + offsets_.platform_load.tail<3>();
+    out.platform_force_N += load.head<3>();
+    out.platform_moment_N_m += load.tail<3>();
+    if (!offsets_.platform_load.isZero(0.0)) {  // a linearisation's input (a run's sums stay as they were)
+      out.platform_force_N += offsets_.platform_load.head<3>();
+      out.platform_moment_N_m += offsets_.platform_load.tail<3>();
+    }
     out.platform_added_mass = sea_.added_mass(*sea_data_);
     out.generator_torque_N_m = held_->generator_torque_N_m;
     if (blades_ || rotor_) multibody::chain_kinematics(model_, s, chain_);
@@ -86,14 +90,14 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
     }
     if (rotor_ && rotor_->tower_drag_on()) rotor_->tower_drag(t, model_, s, chain_, tower_, out);
   }
-  // The large step the next stages belong to (its start time), and its end: outside a step (rows,
-  // linearisation) every evaluation solves its inductions.
-  // The horizontal direction of the mean inflow at the hub probe.
+  // The horizontal direction of the mean inflow at the hub probe (a linearisation's wind offset).
   Vec3 inflow_direction() const {
     Vec3 d = rotor_->probe_wind(0.0);
     d.z() = 0.0;
     return d.norm() > 0.0 ? Vec3(d.normalized()) : Vec3::UnitX();
   }
+  // The large step the next stages belong to (its start time), and its end: outside a step (rows,
+  // linearisation) every evaluation solves its inductions.
   void begin_step(double t) { step_start_ = t; }
   void end_step() { step_start_.reset(); }
   multibody::SpinMotion rotor_spin(double t) override {
