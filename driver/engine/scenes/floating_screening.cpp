@@ -435,12 +435,14 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
   // The controller's linearised dynamics (38060 §7): the filter ω̇_f = ω_c (N Ω_g − ω_f), the
   // integrator İ = ω_f − ω_ref, the pitch δθ = G (K_P δω_f + K_I δI) with the gain schedule's own
   // slope, G = G_K/(1 + G_K θ₀/θ_K) (θ = G_K(θ) (K_P e + K_I I) about e = 0), and the torque law's slope.
-  const int nc = controller.present ? (region3 && pitch_loop ? 2 : 1) : 0;
+  // Only a free rotor closes the loop (a held rotor's speed gives the controller nothing to act on).
+  const bool closed_loop = controller.present && unknown != RotorUnknown::none;
+  const int nc = closed_loop ? (region3 && pitch_loop ? 2 : 1) : 0;
   const int nx = 2 * n + nc;
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(nx, nx);
   a.topLeftCorner(2 * n, 2 * n) = a_open;
   Eigen::RowVectorXd k_pitch = Eigen::RowVectorXd::Zero(nx), k_torque = Eigen::RowVectorXd::Zero(nx);
-  if (controller.present) {
+  if (closed_loop) {
     const int filter = 2 * n, speed = n + (rigid_shaft ? rotor : generator);
     const double ratio = controller.gearbox_ratio, w0 = ratio * s.body.rotor_speed_rad_s, theta0 = s.held.pitch_rad;
     a(filter, speed) = cp.filter_corner_rad_s * ratio;
@@ -448,11 +450,11 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
     constexpr double dw = 1e-3;  // [rad/s] of generator speed: the torque law is piecewise smooth
     const double slope = (controller.torque(w0 + dw, theta0) - controller.torque(w0 - dw, theta0)) / (2.0 * dw);
     if (region3) {
-      // Region 3: T = P/ω_f (constant power) or the rated torque, on the filtered speed.
+      // Region 3: the baseline law's T = P/ω_f (constant power) on the filtered speed; its rated
+      // torque, or the simple law's VS_RtTq, have no slope.
       const double wf = cp.reference_speed_rad_s;
-      const double r3 = cp.region3_torque == control::Region3Torque::constant_power ? -cp.rated_power_W / (wf * wf) : 0.0;
-      k_torque[filter] = cp.generator == control::GeneratorLaw::simple_vs ? 0.0 : r3;
-      if (cp.generator == control::GeneratorLaw::simple_vs) k_torque[speed] = 0.0;  // VS_RtTq above rated
+      if (cp.generator == control::GeneratorLaw::baseline && cp.region3_torque == control::Region3Torque::constant_power)
+        k_torque[filter] = -cp.rated_power_W / (wf * wf);
     } else if (cp.generator == control::GeneratorLaw::simple_vs) {
       k_torque[speed] = slope * ratio;  // the simple law acts on the measured speed
     } else {
