@@ -286,6 +286,9 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
   io::LoadedDeck loaded = io::load_deck(deck_path);
   io::apply_settings(loaded, settings);
   const io::ValidatedDeck source = io::validate(floating_scene_schema(), loaded);
+  if (source.has("blades"))
+    throw InputError({"screen", std::nullopt, "blades", "rigid blades (a deck without the `blades` section)"},
+                     "the flexible MBBT blades' states are not linearised: the screening takes rigid (or Rayleigh-Ritz, parked) blades");
   const bool with_rotor = source.has("aero");
   result.outputs = screening_channels(with_rotor);
   const io::ValidatedDeck deck = linearisation_deck(loaded, result.outputs);
