@@ -21,6 +21,7 @@
 #include "run/run_scene.hpp"
 #include "run/turbulence_command.hpp"
 #include "cli/modes_command.hpp"
+#include "cli/screen_command.hpp"
 #include "cli/post_command.hpp"
 #include "cli/post_config.hpp"
 #include "cli/sweep_command.hpp"
@@ -211,6 +212,13 @@ int main(int argc, char** argv) {
   modes->add_option("deck", modes_deck, "floating-turbine deck (rigid or Rayleigh-Ritz blades)")->required()->check(CLI::ExistingFile);
   modes->add_option("--set", modes_settings, "set a deck key, as for run")->allow_extra_args(false);
   modes->add_option("-o,--output", modes_output, "also write the frequencies, damping and shapes to OUT.h5 or OUT.csv");
+  std::string screen_deck, screen_output;
+  std::vector<std::string> screen_settings;
+  auto* screen = app.add_subcommand("screen", "frequency-domain screening of a floating-turbine deck: operating point, coupled "
+                                              "modes, RAOs, PSDs and standard deviations in its waves and turbulence");
+  screen->add_option("deck", screen_deck, "floating-turbine deck (rigid blades)")->required()->check(CLI::ExistingFile);
+  screen->add_option("--set", screen_settings, "set a deck key, as for run")->allow_extra_args(false);
+  screen->add_option("-o,--output", screen_output, "also write the RAOs, PSDs and statistics to OUT.h5");
   auto* turbulence = app.add_subcommand("turbulence", "generate a turbulent wind field (IEC Kaimal) to .bts and .h5");
   turbulence->add_option("deck", wind_deck, "deck with a `wind:` section of model turbulent")->required()->check(CLI::ExistingFile);
   turbulence->add_option("-o,--output", wind_out,
@@ -269,6 +277,9 @@ int main(int argc, char** argv) {
   sweep->add_option("--max-running", sweep_max_running, "array tasks running at once: --array=0-N%M (--slurm)")
       ->check(positive("a positive whole number"));
   sweep->add_flag("--dry-run", sweep_request.dry_run, "with --slurm: write everything and print the sbatch command, submit nothing");
+  auto* sweep_fd_flag = sweep->add_flag("--frequency-domain", sweep_request.frequency_domain,
+                                        "screen every case in the frequency domain and rank them (runs none)");
+  sweep_fd_flag->excludes(sweep_slurm_flag)->excludes(sweep_collect_flag)->excludes(sweep_list_flag);
   sweep_list_flag->excludes(sweep_slurm_flag)->excludes(sweep_collect_flag);
   sweep_slurm_flag->excludes(sweep_collect_flag);
 
@@ -338,6 +349,9 @@ int main(int argc, char** argv) {
     if (*modes)
       return run_modes_command(modes_deck, modes_settings,
                                modes_output.empty() ? std::nullopt : std::optional<std::filesystem::path>(modes_output), stdout);
+    if (*screen)
+      return run_screen_command(screen_deck, screen_settings,
+                                screen_output.empty() ? std::nullopt : std::optional<std::filesystem::path>(screen_output), stdout);
     if (*turbulence) return run_turbulence_command(wind_deck, wind_out.empty() ? std::nullopt : std::optional<std::filesystem::path>(wind_out), stdout);
     if (*verify) return verify_command(cases, shared_dir);
     set_shared_dir(shared_dir);

@@ -15,6 +15,7 @@
 #include "sweep/case_files.hpp"
 #include "sweep/case_outcome.hpp"
 #include "sweep/folder_lock.hpp"
+#include "sweep/frequency_domain_screening.hpp"
 #include "sweep/iec_presets.hpp"
 #include "sweep/load_table.hpp"
 #include "sweep/local_pool.hpp"
@@ -270,6 +271,7 @@ int run_sweep_command(const SweepRequest& request, std::FILE* out) {
   if (request.output_dir) spec.output_dir = *request.output_dir;
   std::vector<SweepCase> cases = expand_cases(spec, read_base_deck_facts(spec.base_deck));
   const SweepLayout layout{spec.output_dir};
+  if (request.frequency_domain) return screen_sweep(out, spec, cases);
   if (request.action == SweepRequest::Action::list) {
     check_case_decks(spec, cases, layout);  // a case `fowtsim run` would reject shows here, not after hours of others
     print_cases(out, spec, cases);

@@ -4,6 +4,7 @@
 //   --jobs N                run the cases still to run in N local processes, then write the load table
 //   --slurm [--dry-run]     write the case decks and a job-array script, and submit it with sbatch
 //   --collect               write the load table from whatever has finished
+//   --frequency-domain      rank the cases by their frequency-domain screening (sweep/frequency_domain_screening.hpp)
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -20,6 +21,7 @@ struct SweepRequest {
   int jobs = 1;                                     // local processes at once
   sweep::SlurmOptions slurm;                        // --slurm: partition, time, packing, throttle
   bool dry_run = false;                             // --slurm: write everything, do not submit
+  bool frequency_domain = false;                    // screen every case in the frequency domain, run none
   std::filesystem::path executable;                 // runs the cases (`fowtsim run`); empty = this process's
 };
 

@@ -19,9 +19,8 @@ namespace {
 const char* const kCoordinates[] = {"PtfmSurge", "PtfmSway", "PtfmHeave", "PtfmRoll", "PtfmPitch", "PtfmYaw", "Azimuth",
                                     "GenAzimuth"};
 
-// The names of the model's coordinates (multibody Dof indices): the above, a flexible tower's modes,
-// fore-aft first (ElastoDyn's DOF names TwFADOF1, TwFADOF2, TwSSDOF1, TwSSDOF2), Rayleigh–Ritz
-// blades' modes (ElastoDyn's modal channels Q_B<b>F1, Q_B<b>F2, Q_B<b>E1).
+}  // namespace
+
 std::vector<std::string> coordinate_names(const std::vector<int>& dofs, int fore_aft) {
   std::vector<std::string> names;
   for (const int k : dofs) {
@@ -37,6 +36,8 @@ std::vector<std::string> coordinate_names(const std::vector<int>& dofs, int fore
   }
   return names;
 }
+
+namespace {
 
 // A mode from one eigenpair: its shape (displacements) rotated so that its largest entry is real and
 // positive, then scaled to 1.

@@ -24,6 +24,12 @@ struct ModesResult {
   std::vector<StructuralMode> modes;     // one per complex-conjugate pair or real eigenvalue, by frequency
 };
 
+// The names of the model's coordinates (multibody Dof indices): PtfmSurge … PtfmYaw, Azimuth,
+// GenAzimuth, a flexible tower's modes, fore-aft first (ElastoDyn's DOF names TwFADOF1, TwFADOF2,
+// TwSSDOF1, TwSSDOF2), Rayleigh–Ritz blades' modes (ElastoDyn's modal channels Q_B<b>F1, Q_B<b>F2,
+// Q_B<b>E1).
+std::vector<std::string> coordinate_names(const std::vector<int>& dofs, int fore_aft);
+
 // The modes of the deck (with `--set` settings applied): InputError for a deck without a floating
 // scene or with flexible blades.
 ModesResult floating_modes(const std::filesystem::path& deck, const std::vector<std::string>& settings = {});

@@ -50,7 +50,9 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
       : model_(model), sea_(sea), rotor_(rotor), blades_(blades), brake_(brake) {
     if (rotor_) tower_ = rotor_->make_tower_workspace();
   }
-  void act_on(const HeldDemands& held, SeaModules::Data& sea, RotorAero::Data* aero, const TurbineBlades::Data* blades) {
+  void act_on(const HeldDemands& held, SeaModules::Data& sea, RotorAero::Data* aero, const TurbineBlades::Data* blades,
+              const InputOffsets& offsets = {}) {
+    offsets_ = offsets;
     held_ = &held;
     sea_data_ = &sea;
     aero_data_ = aero;
@@ -61,6 +63,10 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
     const Vec6 load = sea_.platform_load(*sea_data_);
     out.platform_force_N += load.head<3>();
     out.platform_moment_N_m += load.tail<3>();
+    if (!offsets_.platform_load.isZero(0.0)) {  // a linearisation's input (a run's sums stay as they were)
+      out.platform_force_N += offsets_.platform_load.head<3>();
+      out.platform_moment_N_m += offsets_.platform_load.tail<3>();
+    }
     out.platform_added_mass = sea_.added_mass(*sea_data_);
     out.generator_torque_N_m = held_->generator_torque_N_m;
     if (brake_) {  // the HSS brake at this instant of its ramp: holding the shaft, or slipping against it
@@ -78,12 +84,23 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
       if (model_.rr_blades.mode_count > 0) {  // Rayleigh–Ritz blades: loads at their stations
         rotor_->evaluate_rayleigh_ritz(t, model_, s, chain_, *aero_data_, &out, induction);
       } else {
+        // A uniform wind offset δU is, to the rigid rotor's blade elements, the apex moving at −δU
+        // along the mean inflow (node velocities are the apex's plus Ω × r).
+        const Vec3 apex_velocity = chain_.apex.velocity_m_s;
+        if (offsets_.wind_speed_m_s != 0.0) chain_.apex.velocity_m_s -= offsets_.wind_speed_m_s * inflow_direction();
         rotor_->evaluate(t, chain_, s.rotor_speed_rad_s, held_->pitch_rad, *aero_data_, induction);
+        chain_.apex.velocity_m_s = apex_velocity;
         out.rotor_force_N = aero_data_->force_N;
         out.rotor_moment_N_m = aero_data_->moment_N_m;
       }
     }
     if (rotor_ && rotor_->tower_drag_on()) rotor_->tower_drag(t, model_, s, chain_, tower_, out);
+  }
+  // The horizontal direction of the mean inflow at the hub probe (a linearisation's wind offset).
+  Vec3 inflow_direction() const {
+    Vec3 d = rotor_->probe_wind(0.0);
+    d.z() = 0.0;
+    return d.norm() > 0.0 ? Vec3(d.normalized()) : Vec3::UnitX();
   }
   // The large step the next stages belong to (its start time), and its end: outside a step (rows,
   // linearisation) every evaluation solves its inductions.
@@ -103,6 +120,7 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
   SeaModules::Data* sea_data_ = nullptr;
   RotorAero::Data* aero_data_ = nullptr;
   const TurbineBlades::Data* blades_data_ = nullptr;
+  InputOffsets offsets_;              // zero but within a linearisation's evaluations
   std::optional<double> step_start_;  // set while a large step's stages run (begin_step)
   multibody::ChainKinematics chain_;  // workspace
   RotorAero::TowerWorkspace tower_;    // workspace
@@ -250,13 +268,27 @@ ShaftMotion FloatingScene::shaft_at(double t, const multibody::State& body) {
   return shaft_motion(evaluation_.kinematics, evaluation_.acceleration);
 }
 
-void FloatingScene::evaluate_on_copy(double t, const FloatingState& s, const multibody::State& body, FloatingState& work) {
+void FloatingScene::evaluate_on_copy(double t, const FloatingState& s, const multibody::State& body, FloatingState& work,
+                                     const InputOffsets& offsets) {
   work.sea = s.sea;
   if (work.aero) *work.aero = *s.aero;
-  stage_loads_->act_on(work.held, work.sea, work.aero ? &*work.aero : nullptr, nullptr);
+  stage_loads_->act_on(work.held, work.sea, work.aero ? &*work.aero : nullptr, nullptr, offsets);
   multibody::AppliedLoads loads;
   stage_loads_->loads(t, body, loads);
   multibody::evaluate(model_, body, loads, t, evaluation_);
+  stage_loads_->act_on(work.held, work.sea, work.aero ? &*work.aero : nullptr, nullptr);  // offsets back to zero
+}
+
+Eigen::VectorXd FloatingScene::accelerations(double t, const FloatingState& s, const InputOffsets& offsets) {
+  if (blades_ || (offsets.wind_speed_m_s != 0.0 && model_.rr_blades.mode_count > 0))
+    throw InputError({"screen", std::nullopt, "blades", "rigid blades"},
+                     "the flexible and Rayleigh-Ritz blades are not linearised in their inputs yet: rigid blades only");
+  FloatingState work = s;
+  evaluate_on_copy(t, s, s.body, work, offsets);
+  const std::vector<int> dofs = coordinates();
+  Eigen::VectorXd a(static_cast<Eigen::Index>(dofs.size()));
+  for (std::size_t i = 0; i < dofs.size(); ++i) a[static_cast<Eigen::Index>(i)] = evaluation_.acceleration[dofs[i]];
+  return a;
 }
 
 Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& s) {
@@ -489,15 +521,16 @@ void FloatingScene::step(double t, double dt, FloatingState& s) {
   sample_controller(t + dt, dt, s);
 }
 
-void FloatingScene::row(double t, const FloatingState& s, std::span<double> out) {
+void FloatingScene::row(double t, const FloatingState& s, std::span<double> out, const InputOffsets& offsets) {
   // The row's own evaluation of the sea (and of a rigid rotor) works on copies: the state's warm
   // starts stay as the step left them.
   row_sea_ = s.sea;
   if (rotor_ && !blades_) *row_aero_ = *s.aero;
   const RotorAero::Data* aero = blades_ ? (s.aero ? &*s.aero : nullptr) : (row_aero_ ? &*row_aero_ : nullptr);
-  stage_loads_->act_on(s.held, row_sea_, row_aero_ ? &*row_aero_ : nullptr, s.blades ? &*s.blades : nullptr);
+  stage_loads_->act_on(s.held, row_sea_, row_aero_ ? &*row_aero_ : nullptr, s.blades ? &*s.blades : nullptr, offsets);
   multibody::AppliedLoads loads;
   stage_loads_->loads(t, s.body, loads);
+  stage_loads_->act_on(s.held, row_sea_, row_aero_ ? &*row_aero_ : nullptr, s.blades ? &*s.blades : nullptr);
   const std::span<double> v(values_);
   if (body_block_.written || sea_block_.written) {  // the hydro channels take the platform's acceleration
     const multibody::Output mo = multibody::Multibody::outputs(model_, loads, s.body, t);

@@ -47,6 +47,13 @@ struct HeldDemands {
   double brake_direction = 0.0;
 };
 
+// Small offsets of the scene's inputs about a state, for the input and output matrices of a
+// linearisation (fowtsim screen, scenes/floating_screening.hpp); zero in a run.
+struct InputOffsets {
+  Vec6 platform_load = Vec6::Zero();  // extra [F; M] on the platform about its reference point, g [N, N·m]
+  double wind_speed_m_s = 0.0;        // uniform wind along the hub's mean inflow, on the rigid rotor only [m/s]
+};
+
 // Everything of a floating scene that changes during a run.
 struct FloatingState {
   multibody::State body;
@@ -83,7 +90,12 @@ class FloatingScene {
   // controller's demands for the next step).
   void step(double t, double dt, FloatingState& s);
   // The written channels at t (in written() order) of `s`, which it leaves as it is.
-  void row(double t, const FloatingState& s, std::span<double> out);
+  void row(double t, const FloatingState& s, std::span<double> out) { row(t, s, out, InputOffsets{}); }
+  // The same under input offsets (their derivatives: the output matrices of a linearisation).
+  void row(double t, const FloatingState& s, std::span<double> out, const InputOffsets& offsets);
+  // The accelerations of coordinates() in `s` at t under input offsets (the state's held demands,
+  // its sea and aero memories held as linearised_system holds them).
+  Eigen::VectorXd accelerations(double t, const FloatingState& s, const InputOffsets& offsets);
 
   const std::vector<ChannelInfo>& written() const { return written_; }
   bool can_checkpoint() const { return !controller_ || controller_->can_checkpoint(); }
@@ -119,7 +131,8 @@ class FloatingScene {
   ShaftMotion shaft_at(double t, const multibody::State& body);
   // The equations of motion at `body` (into evaluation_) under the stage loads of `work`, a copy of
   // `s` whose sea and aero data are reset from `s` first (warm starts and memories stay as s has them).
-  void evaluate_on_copy(double t, const FloatingState& s, const multibody::State& body, FloatingState& work);
+  void evaluate_on_copy(double t, const FloatingState& s, const multibody::State& body, FloatingState& work,
+                        const InputOffsets& offsets = {});
   RotorDemands demands(const FloatingState& s) const;
   void sample_controller(double t, double dt, FloatingState& s) const;
   // The HSS brake over a step from t to t + dt: stick or slip before it (brake_before_step), a
