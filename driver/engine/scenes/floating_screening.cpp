@@ -156,7 +156,7 @@ class Balance {
     s_.body.rotor_speed_rad_s = rotor_speed_;
     s_.body.generator_speed_rad_s = rotor_speed_;
     s_.body.blade_pitch_rad.fill(pitch_);
-    s_.held.pitch_rad = pitch_;
+    s_.held.pitch_rad.fill(pitch_);  // collective
     if (controller_->present)
       s_.held.generator_torque_N_m = controller_->torque(controller_->gearbox_ratio * rotor_speed_, pitch_);
   }
@@ -350,7 +350,7 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
   op.wind_speed_m_s = wind ? wind->speed_m_s : 0.0;
   Balance balance(scene, s, dofs);
   const multibody::State initial = s.body;
-  const double initial_pitch = s.held.pitch_rad;
+  const double initial_pitch = s.held.pitch_rad[0];
   RotorUnknown unknown = RotorUnknown::none;
   if (rotor >= 0 && with_rotor && op.wind_speed_m_s > 0.0) unknown = RotorUnknown::speed;
   const control::BaselineParams& cp = controller.params;
@@ -375,7 +375,7 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
   }
   op.region = region3 ? "region 3" : unknown == RotorUnknown::none ? "parked" : controller.present ? "region 2" : "free rotor";
   op.rotor_speed_rpm = s.body.rotor_speed_rad_s * 30.0 / kPi;
-  op.pitch_deg = s.held.pitch_rad * 180.0 / kPi;
+  op.pitch_deg = s.held.pitch_rad[0] * 180.0 / kPi;
   op.generator_torque_N_m = s.held.generator_torque_N_m;
   {
     // Roll, pitch, yaw of R = R_z(ψ) R_y(θ) R_x(φ) (small at an operating point; labels only).
@@ -414,7 +414,7 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
   Eigen::VectorXd b_pitch = Eigen::VectorXd::Zero(n), b_torque = Eigen::VectorXd::Zero(n), b_wind = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd d_pitch = Eigen::VectorXd::Zero(rows_out), d_torque = Eigen::VectorXd::Zero(rows_out), d_wind = Eigen::VectorXd::Zero(rows_out);
   if (with_rotor) {
-    difference([](FloatingState& x, InputOffsets&, double h) { x.held.pitch_rad += h; x.body.blade_pitch_rad.fill(x.held.pitch_rad); }, 1e-4,
+    difference([](FloatingState& x, InputOffsets&, double h) { for (double& p : x.held.pitch_rad) p += h; x.body.blade_pitch_rad.fill(x.held.pitch_rad[0]); }, 1e-4,
                b_pitch, d_pitch);
     difference([](FloatingState& x, InputOffsets&, double h) { x.held.generator_torque_N_m += h; }, 100.0, b_torque, d_torque);
     if (op.wind_speed_m_s > 0.0)
@@ -447,7 +447,7 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
   Eigen::RowVectorXd k_pitch = Eigen::RowVectorXd::Zero(nx), k_torque = Eigen::RowVectorXd::Zero(nx);
   if (closed_loop) {
     const int filter = 2 * n, speed = n + (rigid_shaft ? rotor : generator);
-    const double ratio = controller.gearbox_ratio, w0 = ratio * s.body.rotor_speed_rad_s, theta0 = s.held.pitch_rad;
+    const double ratio = controller.gearbox_ratio, w0 = ratio * s.body.rotor_speed_rad_s, theta0 = s.held.pitch_rad[0];
     a(filter, speed) = cp.filter_corner_rad_s * ratio;
     a(filter, filter) = -cp.filter_corner_rad_s;
     constexpr double dw = 1e-3;  // [rad/s] of generator speed: the torque law is piecewise smooth
