@@ -123,3 +123,7 @@ TEST_CASE("a restart continues a turbine on WAMIT potential flow in waves bit-id
     check_restart(dir / "deck.yaml", sea, std::string("wamit_") + method);
   }
 }
+
+TEST_CASE("a restart continues the turbine with a riser hung from the spar bit-identically", "[verification][run][riser]") {
+  check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_riser_15mps.yaml", "", "riser");
+}
