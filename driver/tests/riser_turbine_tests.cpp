@@ -73,16 +73,15 @@ TEST_CASE("a vertical riser hangs at the closed-form tension of a tensioned line
   // bound 1e-9 (the static solver stops at increments of 1e-10 of the length).
   CHECK(std::abs(-top.z() - bottom.z() - w * length) < 1e-9 * w * length);
   // The closed form: the tension is linear along the line, which the volumes' piecewise-constant
-  // strain integrates exactly; measured 3.6e-6 relative — the geometrically exact strain (Green's
-  // stretch, not the linear δ/L) and the line's own Poisson-free shortening; bound 4e-5.
-  WARN("rel top " << std::abs(-top.z() / top_closed - 1.0) << " bottom " << std::abs(bottom.z() / bottom_closed - 1.0) << " horiz " << top.head<2>().norm() / top.norm());
-  CHECK(std::abs(-top.z() / top_closed - 1.0) < 4e-5);
-  CHECK(std::abs(bottom.z() / bottom_closed - 1.0) < 4e-5);
-  // The line hangs straight down: nothing horizontal (rounding of the 40 volumes' orientations).
+  // strain integrates exactly, and the beam's axial strain is the stretch, linear in EA; measured
+  // 2.8e-12 (top) and 1.9e-11 (bottom) relative; bound 2e-10 (the static solver's 1e-10 tolerance).
+  CHECK(std::abs(-top.z() / top_closed - 1.0) < 2e-10);
+  CHECK(std::abs(bottom.z() / bottom_closed - 1.0) < 2e-10);
+  // The line hangs straight down: nothing horizontal (measured exactly 0).
   CHECK(top.head<2>().norm() < 1e-9 * top.norm());
 }
 
-TEST_CASE("with the platform held and the sea still, nothing moves on the riser", "[verification][riser]") {
+TEST_CASE("with the platform held in a still sea nothing moves on the riser", "[verification][riser]") {
   const io::ValidatedDeck deck = riser_deck("still", "none", riser_keys("[0.0, 0.0, -320.0]", 0.05));
   FloatingScene scene(deck);
   FloatingState s = scene.make_state();
@@ -94,9 +93,10 @@ TEST_CASE("with the platform held and the sea still, nothing moves on the riser"
   const Vec6 top = scene.riser()->top_load(s.riser->line);
   INFO("largest node speed " << speed << " m/s, top load change " << (top - top0).norm() << " N");
   // The static solution is an equilibrium of the dynamic step (the same residual): measured node
-  // speeds 0 and a top-load change 0 (bit-exact); bounds at rounding of a 330 kN load over 400 steps.
-  CHECK(speed < 1e-9);
-  CHECK((top - top0).norm() < 1e-9 * top0.norm());
+  // speeds of 1.6e-12 m/s and a top-load change of 1.0e-7 N (2e-13 of the 526 kN top load), the
+  // rounding of the residual at a 526 kN tension; bounds 2e-11 m/s and 2e-12 of the load.
+  CHECK(speed < 2e-11);
+  CHECK((top - top0).norm() < 2e-12 * top0.norm());
 }
 
 TEST_CASE("the riser's top load moves the platform to the balance of its spring", "[verification][riser]") {
@@ -119,9 +119,11 @@ TEST_CASE("the riser's top load moves the platform to the balance of its spring"
   const double pull = scene.riser()->top_load(s.riser->line).x();
   INFO("surge " << x << " m, pull at t = 0 " << pull0 << " N, at the end " << pull << " N, K x = " << k_surge * x << " N");
   CHECK(pull0 > 1e4);  // the line pulls toward its anchor (+x), tens of kN
-  // Settled: measured |K x − pull| 2e-6 of the pull (the remaining decay e^{−ωt}(1 + ωt) of the
-  // critically damped surge, ω = 0.5 rad/s, and the held load's lag of one step); bound 1e-4.
-  CHECK(std::abs(k_surge * x - pull) < 1e-4 * pull);
+  // Settled: measured |K x − pull| 8.7e-5 of the pull (72 kN) and a surge speed of 2.7e-7 m/s.
+  // The surge's own decay e^{−ωt}(1 + ωt), ω = 0.5 rad/s, is 4e-10 by now: what remains is the
+  // line's lateral vibration, excited by the platform's approach and damped by quadratic drag
+  // (an amplitude falling as 1/t only) and μ_K; bound 1e-3.
+  CHECK(std::abs(k_surge * x - pull) < 1e-3 * pull);
   CHECK(std::abs(s.body.velocity_m_s.x()) < 1e-6);
 }
 

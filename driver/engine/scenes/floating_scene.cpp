@@ -204,7 +204,7 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
     controller_.emplace(std::move(cs));
   }
   if (deck.has("blades")) blades_.emplace(deck, model_, rotor_ ? &*rotor_ : nullptr);
-  if (deck.has("riser")) riser_.emplace(deck, model_);
+  if (deck.has("riser")) riser_.emplace(deck, model_, *sea_);
   stage_loads_ = std::make_unique<StageLoads>(model_, *sea_, rotor_ ? &*rotor_ : nullptr, blades_ ? &*blades_ : nullptr,
                                               riser_ ? &*riser_ : nullptr,
                                               controller_ ? &controller_->events().brake : nullptr);
@@ -538,7 +538,7 @@ void FloatingScene::step(double t, double dt, FloatingState& s) {
                      s.body, *s.blades, aero);
   }
   // The riser's small steps through the platform's motion over the step (staggered, turbine_riser.hpp).
-  if (riser_) riser_->advance(dt, top_before, s.body, *s.riser);
+  if (riser_) riser_->advance(t, dt, top_before, s.body, *s.riser);
   sea_->advance(t + dt, platform_motion(s.body), s.sea);
   brake_after_step(t + dt, s);
   s.max_rotor_speed_rad_s = std::max(s.max_rotor_speed_rad_s, std::abs(s.body.rotor_speed_rad_s));

@@ -13,6 +13,7 @@
 #include "fowtsim/beam/reference_line.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/multibody/multibody.hpp"
+#include "scenes/sea_modules.hpp"
 
 namespace fowtsim::driver {
 namespace {
@@ -110,7 +111,7 @@ HangOffMotion hermite(const HangOffMotion& a, const HangOffMotion& b, double x, 
 
 Schema riser_schema() { return riser_section().schema(); }
 
-TurbineRiser::TurbineRiser(const io::ValidatedDeck& deck, const multibody::Model& model) {
+TurbineRiser::TurbineRiser(const io::ValidatedDeck& deck, const multibody::Model& model, const SeaModules& sea) {
   const RiserKeys k = riser_section().read(deck.section("riser"));
   arm_b_m_ = k.hang_off_m;
   substeps_ = k.substeps;
@@ -155,6 +156,22 @@ TurbineRiser::TurbineRiser(const io::ValidatedDeck& deck, const multibody::Model
   options_.spectral_radius = k.spectral_radius;
   stepper_ = std::make_unique<beam::DynamicStepper>(line_, options_);
   input_.frame.gravity_m_s2 = Vec3(0.0, 0.0, -model.params.gravity_m_s2);  // f = g: no frame motion
+  std::vector<Vec3> nodes;
+  for (const beam::NodeModel& node : line_.nodes) nodes.push_back(node.position_m);
+  waves_ = sea.kinematics_at(nodes);
+  if (waves_) {  // sized once: a step fills them in place
+    input_.water_velocity_m_s.assign(nodes.size(), Vec3::Zero());
+    input_.water_acceleration_m_s2.assign(nodes.size(), Vec3::Zero());
+  }
+}
+
+void TurbineRiser::set_waves(double t) {
+  if (!waves_) return;
+  for (std::size_t i = 0; i < waves_->size(); ++i) {
+    const waves::WaveKinematics k = waves_->at(i, t);
+    input_.water_velocity_m_s[i] = k.velocity_m_s;
+    input_.water_acceleration_m_s2[i] = k.acceleration_m_s2;
+  }
 }
 
 TurbineRiser::~TurbineRiser() = default;
@@ -173,6 +190,7 @@ void TurbineRiser::set_top(const HangOffMotion& top) {
 TurbineRiser::Data TurbineRiser::make_data(const multibody::State& body) {
   Data d{beam::make_state(line_), Vec6::Zero()};
   set_top({hang_off(body).position_m, Vec3::Zero()});
+  set_waves(0.0);  // the sea at t = 0 (its kinematics only; the line starts at rest)
   beam::solve_static(line_, input_, d.line);
   d.held = top_load(d.line);
   return d;
@@ -185,7 +203,7 @@ void TurbineRiser::add_stage_loads(const multibody::State& body, const Data& d, 
   out.platform_moment_N_m += arm.cross(force) + d.held.tail<3>();
 }
 
-void TurbineRiser::advance(double dt_large, const HangOffMotion& begin, const multibody::State& end, Data& d) {
+void TurbineRiser::advance(double t, double dt_large, const HangOffMotion& begin, const multibody::State& end, Data& d) {
   const HangOffMotion last = hang_off(end);
   const int n = substeps_;
   const double h = dt_large / n;
@@ -193,6 +211,7 @@ void TurbineRiser::advance(double dt_large, const HangOffMotion& begin, const mu
   Vec6 sum = 0.5 * top_load(d.line);
   for (int i = 0; i < n; ++i) {
     set_top(hermite(begin, last, (i + f) / n, dt_large));
+    set_waves(t + (i + f) * h);
     stepper_->step(input_, h, d.line);
     sum += (i + 1 < n ? 1.0 : 0.5) * top_load(d.line);
   }

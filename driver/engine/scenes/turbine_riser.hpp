@@ -32,6 +32,7 @@
 #include "fowtsim/multibody/loads.hpp"
 #include "fowtsim/multibody/model.hpp"
 #include "fowtsim/multibody/state.hpp"
+#include "fowtsim/waves/precomputed_kinematics.hpp"
 
 namespace fowtsim::driver {
 
@@ -43,9 +44,12 @@ struct HangOffMotion {
   Vec3 velocity_m_s = Vec3::Zero();
 };
 
+class SeaModules;
+
 class TurbineRiser {
  public:
-  TurbineRiser(const io::ValidatedDeck& deck, const multibody::Model& model);
+  // `sea`: the waves' particle kinematics load the line at its undisplaced nodes (none in still water).
+  TurbineRiser(const io::ValidatedDeck& deck, const multibody::Model& model, const SeaModules& sea);
   TurbineRiser(const TurbineRiser&) = delete;  // the stepper refers to model_
   TurbineRiser& operator=(const TurbineRiser&) = delete;
   ~TurbineRiser();
@@ -62,9 +66,9 @@ class TurbineRiser {
 
   // The held top load at a Runge–Kutta stage: force at the hang-off point, which turns with the stage's platform.
   void add_stage_loads(const multibody::State& body, const Data& d, multibody::AppliedLoads& out) const;
-  // Steps 2–3 of the header: the line over one large step dt_large through the hang-off point's motion
+  // Steps 2–3 of the header: the line over the large step from t to t + dt_large through the hang-off point's motion
   // from `begin` (at its start) to that of `end` (the multibody's state at its end).
-  void advance(double dt_large, const HangOffMotion& begin, const multibody::State& end, Data& d);
+  void advance(double t, double dt_large, const HangOffMotion& begin, const multibody::State& end, Data& d);
 
   HangOffMotion hang_off(const multibody::State& body) const;
   // The line's load on the platform now: [force at the hang-off point; moment about it], g [N, N·m].
@@ -82,12 +86,14 @@ class TurbineRiser {
 
  private:
   void set_top(const HangOffMotion& top);  // input_ for the top at this motion
+  void set_waves(double t);                 // input_'s wave kinematics at time t
 
   beam::BeamModel line_;  // in g: root at the anchor, tip at the unstretched top
   beam::DynamicOptions options_;
   Vec3 arm_b_m_ = Vec3::Zero();  // hang-off point from the platform reference point, platform frame b [m]
   int substeps_ = 1;
   std::vector<double> gauges_eta_;
+  std::unique_ptr<waves::PrecomputedKinematics> waves_;  // at the line's undisplaced nodes; null in still water
   // Workspace of a small step (written before it is read; nothing in it crosses a step).
   std::unique_ptr<beam::DynamicStepper> stepper_;
   beam::BeamInput input_;
