@@ -19,6 +19,8 @@
 //  3. its top load is averaged over the large step with the trapezoidal weights of the scheduler
 //     (½, 1, …, 1, ½) and held over the next one.
 // The top load is the line's effective tension at the pin (buoyancy as a body force, PIPE.md).
+// Waves load the line by Morison on the relative velocity: their kinematics precomputed at its
+// undisplaced nodes (as the hydro strips take theirs) and sampled at each small step.
 #include <memory>
 #include <span>
 #include <string>
