@@ -18,6 +18,9 @@
 //     at both ends (third order; its velocity the Hermite's derivative, consistent with the path);
 //  3. its top load is averaged over the large step with the trapezoidal weights of the scheduler
 //     (½, 1, …, 1, ½) and held over the next one.
+// Steps 2–3 repeat multi_rate_step's fast loop (the multi_rate mode, no corrector): the
+// multibody's step is already the blades' multi_rate_step when the deck has `blades`, and the
+// scheduler runs one fast group; both in one group is the way to the corrector for the riser.
 // The top load is the line's effective tension at the pin (buoyancy as a body force, PIPE.md).
 // Waves load the line by Morison on the relative velocity: their kinematics precomputed at its
 // undisplaced nodes (as the hydro strips take theirs) and sampled at each small step.
