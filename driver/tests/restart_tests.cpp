@@ -123,3 +123,9 @@ TEST_CASE("a restart continues a turbine on WAMIT potential flow in waves bit-id
     check_restart(dir / "deck.yaml", sea, std::string("wamit_") + method);
   }
 }
+
+TEST_CASE("a restart continues the turbine with a riser hung from the spar bit-identically", "[verification][run][riser]") {
+  // In an irregular sea: the line takes its wave kinematics at every small step.
+  check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_riser_15mps.yaml",
+                "waves: {model: jonswap, hs_m: 4.0, tp_s: 9.0, seed: 3, duration_s: 200.0, dt_s: 0.25, depth_m: 320.0}\n", "riser");
+}

@@ -79,6 +79,7 @@ TEST_CASE("every field of the scene states is in its field list", "[unit][scene_
   check_every_field_listed<TurbineBlades::SpinProfile>("TurbineBlades::SpinProfile");
   check_every_field_listed<TurbineBlades::Data>("TurbineBlades::Data");
   check_every_field_listed<TurbineController::Data>("TurbineController::Data");
+  check_every_field_listed<TurbineRiser::Data>("TurbineRiser::Data");
   check_every_field_listed<HeldDemands>("HeldDemands");
   check_every_field_listed<FloatingState>("FloatingState");
   // The toy oscillators' scene state: the scheduler's module pair.
@@ -105,6 +106,12 @@ TEST_CASE("member_count counts an aggregate's members, whatever their types", "[
 TEST_CASE("flexible blades: a row leaves the scene state as it is, and a copy continues bit-identically",
           "[unit][scene_state]") {
   check_row_and_copy(short_deck("flexible", "oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml"), 10);
+}
+
+TEST_CASE("a riser hung from the spar: a row leaves the scene state as it is, and a copy continues bit-identically",
+          "[unit][scene_state][riser]") {
+  check_row_and_copy(short_deck("riser", "oc3_hywind/turbine_riser_15mps.yaml",
+                                "waves: {model: regular, height_m: 6.0, period_s: 10.0}\n"), 10);
 }
 
 TEST_CASE("rigid blades with unsteady aerodynamics: a row leaves the scene state as it is, and a copy continues "

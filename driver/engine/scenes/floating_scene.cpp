@@ -46,8 +46,8 @@ FrameMotion platform_motion(const multibody::State& s) {
 class FloatingScene::StageLoads final : public multibody::LoadProvider {
  public:
   StageLoads(const multibody::Model& model, const SeaModules& sea, const RotorAero* rotor, const TurbineBlades* blades,
-             const control::BrakeParams* brake)
-      : model_(model), sea_(sea), rotor_(rotor), blades_(blades), brake_(brake) {
+             const TurbineRiser* riser, const control::BrakeParams* brake)
+      : model_(model), sea_(sea), rotor_(rotor), blades_(blades), riser_(riser), brake_(brake) {
     if (rotor_) tower_ = rotor_->make_tower_workspace();
   }
   void act_on(const HeldDemands& held, SeaModules::Data& sea, RotorAero::Data* aero, const TurbineBlades::Data* blades,
@@ -57,7 +57,11 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
     sea_data_ = &sea;
     aero_data_ = aero;
     blades_data_ = blades;
+    riser_data_ = nullptr;
   }
+  // The riser's held top load on the platform (after act_on, which drops it: a linearisation's
+  // evaluations leave the riser out, and say so).
+  void with_riser(const TurbineRiser::Data* riser) { riser_data_ = riser; }
   void loads(double t, const multibody::State& s, multibody::AppliedLoads& out) override {
     sea_.evaluate(t, platform_motion(s), *sea_data_);
     const Vec6 load = sea_.platform_load(*sea_data_);
@@ -95,6 +99,7 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
       }
     }
     if (rotor_ && rotor_->tower_drag_on()) rotor_->tower_drag(t, model_, s, chain_, tower_, out);
+    if (riser_data_) riser_->add_stage_loads(s, *riser_data_, out);
   }
   // The horizontal direction of the mean inflow at the hub probe (a linearisation's wind offset).
   Vec3 inflow_direction() const {
@@ -115,11 +120,13 @@ class FloatingScene::StageLoads final : public multibody::LoadProvider {
   const SeaModules& sea_;
   const RotorAero* rotor_;
   const TurbineBlades* blades_;
+  const TurbineRiser* riser_;          // null without a `riser` section
   const control::BrakeParams* brake_;  // null without a controller
   const HeldDemands* held_ = nullptr;
   SeaModules::Data* sea_data_ = nullptr;
   RotorAero::Data* aero_data_ = nullptr;
   const TurbineBlades::Data* blades_data_ = nullptr;
+  const TurbineRiser::Data* riser_data_ = nullptr;
   InputOffsets offsets_;              // zero but within a linearisation's evaluations
   std::optional<double> step_start_;  // set while a large step's stages run (begin_step)
   multibody::ChainKinematics chain_;  // workspace
@@ -139,6 +146,7 @@ Schema floating_scene_schema() {
       {"wind", wind_schema().optional().doc("inflow (needed with `aero`)")},
       {"controller", controller_schema().optional().doc("generator torque and blade pitch; absent = parked, no torque")},
       {"blades", blades_schema().optional().doc("flexible MBBT blades (and the coupling); absent = rigid blades")},
+      {"riser", riser_schema().optional().doc("a riser or power cable (MBBT pipe) hung from the platform; absent = none")},
   });
 }
 
@@ -196,7 +204,9 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
     controller_.emplace(std::move(cs));
   }
   if (deck.has("blades")) blades_.emplace(deck, model_, rotor_ ? &*rotor_ : nullptr);
+  if (deck.has("riser")) riser_.emplace(deck, model_, *sea_);
   stage_loads_ = std::make_unique<StageLoads>(model_, *sea_, rotor_ ? &*rotor_ : nullptr, blades_ ? &*blades_ : nullptr,
+                                              riser_ ? &*riser_ : nullptr,
                                               controller_ ? &controller_->events().brake : nullptr);
   initial_pitch_rad_ = structure_.initial_conditions.blade_pitch_deg * std::numbers::pi / 180.0;
   // An idling or parked rotor starts with its blades at feather.
@@ -213,6 +223,7 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   add_block(sea_block_, sea_->channels());
   if (rotor_) add_block(rotor_block_, rotor_->channels());
   if (blades_) add_block(blades_block_, blades_->channels());
+  if (riser_) add_block(riser_block_, riser_->channels());
   if (!blades_ && (rotor_ || controller_)) {  // rigid blades turn to the held pitch at once (flexible ones: their actuator's)
     std::vector<ChannelInfo> pitch;
     for (int b = 1; b <= model_.blade_count; ++b)
@@ -236,7 +247,7 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   picked_ = select_channels(deck, all_, "floating");
   for (std::size_t i : picked_) {
     written_.push_back(all_[i]);
-    for (Block* b : {&body_block_, &sea_block_, &rotor_block_, &blades_block_, &pitch_block_, &controller_block_, &brake_block_})
+    for (Block* b : {&body_block_, &sea_block_, &rotor_block_, &blades_block_, &riser_block_, &pitch_block_, &controller_block_, &brake_block_})
       if (i >= b->first && i < b->first + b->count) b->written = true;
   }
   values_.assign(all_.size(), 0.0);
@@ -283,6 +294,9 @@ Eigen::VectorXd FloatingScene::accelerations(double t, const FloatingState& s, c
   if (blades_ || (offsets.wind_speed_m_s != 0.0 && model_.rr_blades.mode_count > 0))
     throw InputError({"screen", std::nullopt, "blades", "rigid blades"},
                      "the flexible and Rayleigh-Ritz blades are not linearised in their inputs yet: rigid blades only");
+  if (riser_)
+    throw InputError({"screen", std::nullopt, "riser", "a deck without the `riser` section"},
+                     "the riser's states are not linearised yet: drop the `riser` section");
   FloatingState work = s;
   evaluate_on_copy(t, s, s.body, work, offsets);
   const std::vector<int> dofs = coordinates();
@@ -295,6 +309,9 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
   if (blades_)
     throw InputError({"modes", std::nullopt, "blades", "rigid blades (drop the `blades` section)"},
                      "the flexible blades' states are not linearised yet: modes of the rigid-blade structure only");
+  if (riser_)
+    throw InputError({"modes", std::nullopt, "riser", "a deck without the `riser` section"},
+                     "the riser's states are not linearised yet: drop the `riser` section");
   const std::vector<int> dofs = coordinates();
   const int n = static_cast<int>(dofs.size());
   FloatingState work = s;  // the loads' warm starts and memories change on a copy only
@@ -411,9 +428,11 @@ FloatingState FloatingScene::make_state() {
   if (controller_) s.controller = controller_->make_data();
   s.sea = sea_->initial_data();
   if (rotor_) s.aero = rotor_->make_data();
+  if (riser_) s.riser = riser_->make_data(s.body);
   if (blades_) {
     s.blades = blades_->make_data();
     stage_loads_->act_on(s.held, s.sea, s.aero ? &*s.aero : nullptr, &*s.blades);
+    stage_loads_->with_riser(s.riser ? &*s.riser : nullptr);
     blades_->start(shaft_at(0.0, s.body), s.body, initial_pitch_rad_, demands(s), *s.blades, s.aero ? &*s.aero : nullptr);
   }
   sample_controller(0.0, dt_s_, s);  // the demands of t = 0: held over the first step, in the first row
@@ -475,6 +494,7 @@ void FloatingScene::brake_after_step(double t_end, FloatingState& s) {
     row_sea_ = s.sea;
     if (rotor_ && !blades_) *row_aero_ = *s.aero;
     stage_loads_->act_on(h, row_sea_, row_aero_ ? &*row_aero_ : nullptr, s.blades ? &*s.blades : nullptr);
+    stage_loads_->with_riser(s.riser ? &*s.riser : nullptr);
     multibody::AppliedLoads loads;
     stage_loads_->loads(t_end, s.body, loads);
     multibody::evaluate(model_, s.body, loads, t_end, evaluation_);
@@ -500,6 +520,8 @@ void FloatingScene::step(double t, double dt, FloatingState& s) {
   RotorAero::Data* aero = s.aero ? &*s.aero : nullptr;
   brake_before_step(t, dt, s);
   stage_loads_->act_on(s.held, s.sea, aero, s.blades ? &*s.blades : nullptr);
+  stage_loads_->with_riser(s.riser ? &*s.riser : nullptr);
+  const HangOffMotion top_before = riser_ ? riser_->hang_off(s.body) : HangOffMotion{};
   if (!blades_) {
     stage_loads_->begin_step(t);
     multibody::Multibody::advance(model_, *stage_loads_, t, dt, s.body);
@@ -515,6 +537,8 @@ void FloatingScene::step(double t, double dt, FloatingState& s) {
     blades_->advance(*stage_loads_, [this](double tt, const multibody::State& b) { return shaft_at(tt, b); }, d, t, dt,
                      s.body, *s.blades, aero);
   }
+  // The riser's small steps through the platform's motion over the step (staggered, turbine_riser.hpp).
+  if (riser_) riser_->advance(t, dt, top_before, s.body, *s.riser);
   sea_->advance(t + dt, platform_motion(s.body), s.sea);
   brake_after_step(t + dt, s);
   s.max_rotor_speed_rad_s = std::max(s.max_rotor_speed_rad_s, std::abs(s.body.rotor_speed_rad_s));
@@ -528,6 +552,7 @@ void FloatingScene::row(double t, const FloatingState& s, std::span<double> out,
   if (rotor_ && !blades_) *row_aero_ = *s.aero;
   const RotorAero::Data* aero = blades_ ? (s.aero ? &*s.aero : nullptr) : (row_aero_ ? &*row_aero_ : nullptr);
   stage_loads_->act_on(s.held, row_sea_, row_aero_ ? &*row_aero_ : nullptr, s.blades ? &*s.blades : nullptr, offsets);
+  stage_loads_->with_riser(s.riser ? &*s.riser : nullptr);
   multibody::AppliedLoads loads;
   stage_loads_->loads(t, s.body, loads);
   stage_loads_->act_on(s.held, row_sea_, row_aero_ ? &*row_aero_ : nullptr, s.blades ? &*s.blades : nullptr);
@@ -541,6 +566,7 @@ void FloatingScene::row(double t, const FloatingState& s, std::span<double> out,
   }
   if (rotor_block_.written) rotor_->channel_values(t, *aero, v.subspan(rotor_block_.first, rotor_block_.count));
   if (blades_block_.written) blades_->channel_values(*s.blades, v.subspan(blades_block_.first, blades_block_.count));
+  if (riser_block_.written) riser_->channel_values(s.body, *s.riser, v.subspan(riser_block_.first, riser_block_.count));
   if (pitch_block_.written)
     for (std::size_t b = 0; b < pitch_block_.count; ++b) v[pitch_block_.first + b] = s.held.pitch_rad[b] * 180.0 / std::numbers::pi;
   if (controller_block_.written) {
@@ -581,6 +607,7 @@ std::string FloatingScene::coupling_description() const {
   else if (rotor_ && model_.rr_blades.mode_count > 0) parts.push_back("Rayleigh-Ritz blades with BEM on the deflected blades at every RK4 stage");
   else if (rotor_) parts.push_back("rigid blades with BEM at every RK4 stage");
   else parts.push_back("rigid blades, no aerodynamics");
+  if (riser_) parts.push_back(riser_->description());
   parts.push_back(controller_ ? "controller at the large step" : "no controller (generator torque 0, pitch held)");
   std::string text;
   for (const std::string& p : parts) text += (text.empty() ? "" : "; ") + p;

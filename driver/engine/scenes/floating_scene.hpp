@@ -29,6 +29,7 @@
 #include "scenes/sea_modules.hpp"
 #include "scenes/turbine_blades.hpp"
 #include "scenes/turbine_controller.hpp"
+#include "scenes/turbine_riser.hpp"
 
 namespace fowtsim::driver {
 
@@ -62,6 +63,7 @@ struct FloatingState {
   SeaModules::Data sea;
   std::optional<RotorAero::Data> aero;                // with an `aero` section
   std::optional<TurbineBlades::Data> blades;          // with a `blades` section
+  std::optional<TurbineRiser::Data> riser;            // with a `riser` section
   double max_rotor_speed_rad_s = 0.0;                 // |Ω| so far (the overspeed warning)
 };
 
@@ -71,7 +73,7 @@ void fields(Archive& a, HeldDemands& h) {
 }
 template <class Archive>
 void fields(Archive& a, FloatingState& s) {
-  a.io(s.body, s.held, s.controller, s.sea, s.aero, s.blades, s.max_rotor_speed_rad_s);
+  a.io(s.body, s.held, s.controller, s.sea, s.aero, s.blades, s.riser, s.max_rotor_speed_rad_s);
 }
 
 class FloatingScene {
@@ -124,7 +126,8 @@ class FloatingScene {
   int tower_fore_aft_modes() const { return model_.flexible_tower.fore_aft_count; }
   const wind::WindField* wind() const { return rotor_ ? &rotor_->wind() : nullptr; }
   const SeaModules& sea() const { return *sea_; }
-  int substeps() const { return blades_ ? blades_->substeps() : 1; }  // small steps per large step
+  int substeps() const { return blades_ ? blades_->substeps() : 1; }  // small steps per large step (the blades')
+  const TurbineRiser* riser() const { return riser_ ? &*riser_ : nullptr; }
 
  private:
   class StageLoads;
@@ -149,6 +152,7 @@ class FloatingScene {
   std::optional<RotorAero> rotor_;
   std::optional<TurbineController> controller_;
   std::optional<TurbineBlades> blades_;
+  std::optional<TurbineRiser> riser_;
   std::unique_ptr<StageLoads> stage_loads_;
   double initial_pitch_rad_ = 0.0;
   double dt_s_ = 0.0;             // the large step (simulation.dt_s)
@@ -163,7 +167,7 @@ class FloatingScene {
   };
   std::vector<ChannelInfo> all_, written_;
   std::vector<std::size_t> picked_;                   // indices into all_, in written order
-  Block body_block_, sea_block_, rotor_block_, blades_block_, pitch_block_, controller_block_, brake_block_;
+  Block body_block_, sea_block_, rotor_block_, blades_block_, riser_block_, pitch_block_, controller_block_, brake_block_;
   std::vector<std::size_t> controller_source_;        // controller block channel k ← controller_channels()[source[k]]
 
   // Workspace (written before it is read; nothing in it crosses a step).

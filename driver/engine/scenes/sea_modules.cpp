@@ -128,6 +128,11 @@ Mat6 SeaModules::mooring_stiffness(const FrameMotion& pose) const {
   return mooring::linearized_stiffness(*mooring_, {pose, 0.0}, state);
 }
 
+std::unique_ptr<waves::PrecomputedKinematics> SeaModules::kinematics_at(std::span<const Vec3> points_m) const {
+  if (!sea_.field || sea_.field->calm()) return nullptr;
+  return std::make_unique<waves::PrecomputedKinematics>(*sea_.field, points_m);
+}
+
 std::vector<std::uint64_t> SeaModules::seeds() const {
   if (has_waves_) return {wave_params_.seed};
   return {};

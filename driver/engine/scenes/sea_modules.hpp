@@ -60,6 +60,9 @@ class SeaModules {
   std::vector<std::string> warnings() const;
   // The incident sea's parameters, or null in still water without a `waves` section.
   const waves::WaveParams* incident_waves() const { return has_waves_ ? &wave_params_ : nullptr; }
+  // The incident sea's kinematics precomputed at fixed points of g (a line's undisplaced nodes, as
+  // HydroDyn takes them at its members'); null in still water.
+  std::unique_ptr<waves::PrecomputedKinematics> kinematics_at(std::span<const Vec3> points_m) const;
   // Random seeds in use (the wave seed, when there is a sea).
   std::vector<std::uint64_t> seeds() const;
 

@@ -21,9 +21,14 @@ void add_water_node_terms(const BeamModel& model, const BeamInput& input, const 
   // F_0 − J u̇_0 to the load; a static solve (no velocity) keeps F_0, the drag of the current.
   const double k = 0.5 * water.density_kg_m3 * water.drag_coefficient * d * ds;
   const Vec3 u0 = state.velocity[i].head<3>();
-  const Vec3 vn = normal * (water.current_m_s - u0);
+  const Vec3 flow = input.water_velocity_m_s.empty() ? water.current_m_s : Vec3(water.current_m_s + input.water_velocity_m_s[i]);
+  const Vec3 vn = normal * (flow - u0);
   const double speed = vn.norm();
   rhs.head<3>() += k * speed * vn;
+  // The accelerating sea (Morison's inertia term): Froude–Krylov ρ A_e Δs a_w and the added mass's
+  // share C_a ρ A_e Δs a_w, normal to the axis; a load, so it acts in a static solve too.
+  if (!input.water_acceleration_m_s2.empty())
+    rhs.head<3>() += (1.0 + water.added_mass_coefficient) * displaced * (normal * input.water_acceleration_m_s2[i]);
   if (!inertia) return;
   mass.block<3, 3>(0, 0) += water.added_mass_coefficient * displaced * normal;
   if (speed == 0.0) return;

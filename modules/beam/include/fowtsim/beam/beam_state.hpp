@@ -34,6 +34,11 @@ struct BeamInput {
   // moved by the platform). Its orientation stays. A free tip ignores them; generalized_alpha only.
   Vec3 tip_displacement_m = Vec3::Zero();
   Vec3 tip_velocity_m_s = Vec3::Zero();
+  // The sea's wave particle velocity and local acceleration at each node, in f [m/s, m/s²] (empty:
+  // still water): with BeamModel::water, added to its current in the drag's relative velocity and
+  // loading the wet volumes by Morison's inertia term C_m ρ A_e Δs (I − t tᵀ) a_w.
+  std::vector<Vec3> water_velocity_m_s;
+  std::vector<Vec3> water_acceleration_m_s2;
 };
 
 struct BeamState {
