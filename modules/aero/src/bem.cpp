@@ -10,6 +10,14 @@
 #include "fowtsim/core/error.hpp"
 
 namespace fowtsim::aero {
+
+// Largest induced velocity of a momentum solution, in units of the section's inflow speed |V|:
+// twice what a = 1 gives in axial flow, so every state of the windmill branch (Buhl's a up to ~1.1)
+// keeps its root.
+constexpr double kMaxInducedToInflow = 2.0;
+// Smallest axial induction of a momentum solution: below −1 the disk would more than double the
+// flow through it, beyond the propeller branch of momentum theory.
+constexpr double kMinAxialInduction = -1.0;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -332,6 +340,17 @@ SectionSolution solve_section(const SectionInflow& in, const Polar& polar, const
   }
   if (!std::isfinite(a) || !std::isfinite(ap)) {
     base.status = InductionStatus::no_root;
+    return section_with_induction(in, polar, 0.0, 0.0, base);
+  }
+  // Momentum theory bounds the induction by the flow through the disk (a ≤ 1, Buhl's branch a
+  // little beyond; a propeller state above a = −1). Where φ nears 0 or π with V_x ≪ V_y the relations
+  // above turn a root of R into any a at all: measured on a parked rotor yawed 85° in 50 m/s steady
+  // wind, a = −204 at V_x = 6 mm/s, then a = 1.6e5 at another node, 12,700 m/s of relative speed and
+  // 2.4e10 N·m on the rotor within one step. Such a root is not a momentum solution: the section
+  // takes the geometric inflow.
+  if (a < kMinAxialInduction || std::abs(a * vx) > kMaxInducedToInflow * speed ||
+      std::abs(ap * vy) > kMaxInducedToInflow * speed) {
+    base.status = InductionStatus::beyond_momentum;
     return section_with_induction(in, polar, 0.0, 0.0, base);
   }
   return section_with_induction(in, polar, a, ap, base);

@@ -46,6 +46,9 @@ enum class InductionStatus {
   no_tangential_flow,    // |V_y| negligible: φ = ±π/2, a from the axial balance, a' = 0
   still_air,             // V_x = V_y = 0: no loads
   no_root,               // R(φ) has no sign change on the circle: a = a' = 0 (counted in Output)
+  beyond_momentum,       // a root with a < −1 or an induced velocity a V_x or a' V_y above twice the
+                         // section's inflow speed: outside momentum theory (flow nearly in the blade's
+                         // plane, e.g. a parked rotor yawed ~90°); a = a' = 0, as AeroDyn drops invalid roots
 };
 
 struct SectionSolution {
