@@ -35,7 +35,7 @@ void bench_waves(std::FILE* out);
 std::vector<std::string> verification_case_names() {
   return {"coupling", "beam-rollup", "beam-curved", "beam-timestep", "beam-beamdyn", "beam-frequencies", "pipe", "sea",
           "aero",     "wind",        "multibody",   "control",       "flexbody",     "slender",     "free-decay",   "turbine-validation",
-          "turbine-oc3"};
+          "turbine-oc3", "screening"};
 }
 
 std::vector<VerificationRow> run_verification_case(const std::string& name, std::FILE* out) {
@@ -53,6 +53,7 @@ std::vector<VerificationRow> run_verification_case(const std::string& name, std:
   if (name == "control") return verify_control(out);
   if (name == "flexbody") return verify_flexbody(out);  // verify_flexbody.cpp
   if (name == "slender") return verify_slender(out);  // verify_slender.cpp
+  if (name == "screening") return verify_screening(out);  // verify_screening.cpp
   if (name == "free-decay") return verify_free_decay(out);
   if (name == "turbine-validation") return verify_turbine_validation(out);
   if (name == "turbine-oc3") return verify_turbine_oc3(out);
