@@ -57,7 +57,11 @@ SeaGrid jonswap_grid(const SlenderSea& sea) {
   const int last = static_cast<int>(std::floor(sea.max_omega_rad_s / g.delta_omega_rad_s + 1e-9));
   const int count = std::max(0, last - g.first_index + 1);
   g.omega_rad_s = VecX::LinSpaced(count, g.first_index, last) * g.delta_omega_rad_s;
-  g.spectrum_m2_s = g.omega_rad_s.unaryExpr([&](double w) { return waves::jonswap_density(w, sea.hs_m, sea.tp_s, sea.gamma); });
+  // C(γ) once: it is an integral over the spectrum's shape (most of a frequency-domain case's time
+  // if taken at every ω).
+  const double normalisation = waves::jonswap_normalisation(sea.gamma);
+  g.spectrum_m2_s = g.omega_rad_s.unaryExpr(
+      [&](double w) { return waves::jonswap_density(w, sea.hs_m, sea.tp_s, sea.gamma, normalisation); });
   return g;
 }
 

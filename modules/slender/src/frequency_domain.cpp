@@ -50,6 +50,81 @@ VecXc morison_excitation(const StripTable& s, const VecX& drag_damping, double o
          drag_damping.cast<std::complex<double>>().cwiseProduct(flow);
 }
 
+// A · B for a real A and a complex B, as two real products (a quarter of a complex product's work).
+MatXc real_times(const MatX& a, const MatXc& b) {
+  MatXc out(a.rows(), b.cols());
+  out.real() = a * b.real();
+  out.imag() = a * b.imag();
+  return out;
+}
+
+// solve_generalised for every frequency of a random sea under one drag damping (the drag
+// linearisation's inner loop): what does not change with ω — K⁻¹, the modal damping Ψᵀ C Ψ — is
+// formed once per drag damping, and the generalised loads Φᵀ diag(Δx)(iω ρC_mA + c) U of all
+// frequencies by two matrix products (the inertia part once per sea), so a frequency costs a
+// z × z solve. The same algebra as solve_generalised, reordered.
+class RandomSeaSystem {
+ public:
+  RandomSeaSystem(const Model& model, const Modes& modes, const VecX& omegas, const MatXc& flow, Recovery recovery)
+      : model_(model), modes_(modes), omegas_(omegas), flow_(flow),
+        weighted_phi_t_(model.phi.transpose() * model.strips.dx_m.asDiagonal()),
+        mode_acceleration_(recovery == Recovery::ModeAcceleration && modes.shapes.cols() < model.mass.rows()) {
+    const MatX inertia = weighted_phi_t_ * model.strips.inertia_coefficient_kg_m.asDiagonal();
+    inertia_load_ = real_times(inertia, flow);
+    for (Eigen::Index j = 0; j < omegas.size(); ++j) inertia_load_.col(j) *= 1i * omegas(j);
+    if (!mode_acceleration_) return;
+    const Eigen::LLT<MatX> stiffness(model.stiffness);
+    if (stiffness.info() != Eigen::Success)
+      throw InputError({"slender.frequency_domain", std::nullopt, "K", "add end springs or keep every mode"},
+                       "mode acceleration needs K positive definite");
+    flexibility_ = stiffness.solve(MatX::Identity(model.mass.rows(), model.mass.cols()));
+    flexibility_mass_psi_ = flexibility_ * model.mass * modes.shapes;
+  }
+
+  // q per unit amplitude at every ω_j (n × Nf) under the drag damping c per strip.
+  void solve(const VecX& drag_damping, MatXc& q) {
+    const MatX damping = model_.structural_damping + weighted_phi_t_ * drag_damping.asDiagonal() * model_.phi;
+    const MatX modal_damping = modes_.shapes.transpose() * damping * modes_.shapes;
+    const MatX drag = weighted_phi_t_ * drag_damping.asDiagonal();
+    load_ = inertia_load_ + real_times(drag, flow_);
+    modal_load_ = real_times(modes_.shapes.transpose(), load_);
+    const auto z = modes_.shapes.cols();
+    MatXc a(z, omegas_.size());
+    MatXc dynamic(z, z);
+    Eigen::PartialPivLU<MatXc> lu(z);
+    for (Eigen::Index j = 0; j < omegas_.size(); ++j) {
+      const double w = omegas_(j);
+      dynamic = (1i * w) * modal_damping.cast<std::complex<double>>();
+      dynamic.diagonal().array() += (modes_.omega_rad_s.array().square() - w * w).cast<std::complex<double>>();
+      lu.compute(dynamic);
+      a.col(j) = lu.solve(modal_load_.col(j));
+    }
+    if (!mode_acceleration_) {
+      q = real_times(modes_.shapes, a);
+      return;
+    }
+    // q = K⁻¹[Q + ω² MΨa − iω CΨa].
+    const MatX flexibility_damping_psi = flexibility_ * damping * modes_.shapes;
+    MatXc inertial = a, viscous = a;
+    for (Eigen::Index j = 0; j < omegas_.size(); ++j) {
+      inertial.col(j) *= omegas_(j) * omegas_(j);
+      viscous.col(j) *= -1i * omegas_(j);
+    }
+    q = real_times(flexibility_, load_) + real_times(flexibility_mass_psi_, inertial) + real_times(flexibility_damping_psi, viscous);
+  }
+
+ private:
+  const Model& model_;
+  const Modes& modes_;
+  const VecX& omegas_;
+  const MatXc& flow_;                  // U (N × Nf)
+  MatX weighted_phi_t_;                // Φᵀ diag(Δx) (n × N)
+  MatXc inertia_load_;                 // Φᵀ diag(Δx ρC_mA) U iω (n × Nf)
+  MatXc load_, modal_load_;            // Q (n × Nf), Ψᵀ Q (z × Nf)
+  bool mode_acceleration_;
+  MatX flexibility_, flexibility_mass_psi_;  // K⁻¹, K⁻¹MΨ
+};
+
 }  // namespace
 
 VecXc solve_generalised(const Model& model, const Modes& modes, double omega, const VecXc& force,
@@ -116,13 +191,12 @@ RandomResponse solve_random(const Model& model, const Modes& modes, const VecX& 
     return VecX((transfer.cwiseAbs2() * (spectrum * delta_omega)).cwiseSqrt());
   };
   RandomResponse r{omegas, delta_omega, spectrum, MatXc(model.mass.rows(), Nf), MatXc(N, Nf), sigma_of(U), {}, 0};
+  RandomSeaSystem system(model, modes, omegas, U, options.recovery);
+  MatXc velocity(model.mass.rows(), Nf);
   r.iterations = iterate_drag_linearisation(s, random_factor * r.sigma_relative_velocity_m_s, r.drag_damping_N_s_m2, options, [&] {
-    for (Eigen::Index j = 0; j < Nf; ++j) {
-      const double w = omegas(j);
-      const VecXc force = morison_excitation(s, r.drag_damping_N_s_m2, w, U.col(j));
-      r.q_transfer.col(j) = solve_generalised(model, modes, w, force, r.drag_damping_N_s_m2, options.recovery);
-      r.relative_velocity_transfer.col(j) = U.col(j) - (1i * w) * (model.phi * r.q_transfer.col(j));
-    }
+    system.solve(r.drag_damping_N_s_m2, r.q_transfer);
+    for (Eigen::Index j = 0; j < Nf; ++j) velocity.col(j) = (1i * omegas(j)) * r.q_transfer.col(j);
+    r.relative_velocity_transfer = U - real_times(model.phi, velocity);
     r.sigma_relative_velocity_m_s = sigma_of(r.relative_velocity_transfer);
     return VecX(random_factor * r.sigma_relative_velocity_m_s);
   });

@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -130,11 +131,20 @@ TEST_CASE("performance: one FD case of the cantilever (printed, not asserted)", 
     spectrum(j) = pierson_moskowitz(omegas(j), 4.0, 10.0);
   }
   const MatXc U = velocity_transfer_table(model, omegas);
-  const auto start = std::chrono::steady_clock::now();
-  const RandomResponse r = solve_random(model, modes, omegas, spectrum, 0.02, U);
-  const RmsProfiles p = rms_profiles(model, r);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  std::cout << "slender FD, 100 strips, 8 shapes, 4 modes, 100 frequencies, " << r.iterations
-            << " drag iterations: " << ms << " ms (base σ_stress " << p.stress_Pa(0) / 1e6 << " MPa)\n";
+  // Best of five: the machine is shared, the least disturbed run is the cost.
+  double solve_ms = INFINITY, profiles_ms = INFINITY;
+  RandomResponse r;
+  RmsProfiles p;
+  for (int k = 0; k < 5; ++k) {
+    const auto start = std::chrono::steady_clock::now();
+    r = solve_random(model, modes, omegas, spectrum, 0.02, U);
+    const auto solved = std::chrono::steady_clock::now();
+    p = rms_profiles(model, r);
+    const auto end = std::chrono::steady_clock::now();
+    solve_ms = std::min(solve_ms, std::chrono::duration<double, std::milli>(solved - start).count());
+    profiles_ms = std::min(profiles_ms, std::chrono::duration<double, std::milli>(end - solved).count());
+  }
+  std::cout << "slender FD, 100 strips, 8 shapes, 4 modes, 100 frequencies, " << r.iterations << " drag iterations: solve "
+            << solve_ms << " ms, rms profiles " << profiles_ms << " ms (best of 5; base σ_stress " << p.stress_Pa(0) / 1e6 << " MPa)\n";
   CHECK(p.stress_Pa.allFinite());
 }
