@@ -177,6 +177,11 @@ VecXc harmonic_load_per_length(const Model& model, const HarmonicResponse& r) {
          inertia_factor * s.mass_kg_m.cast<std::complex<double>>().cwiseProduct(v);
 }
 
+VecXc harmonic_inertial_q(const Model& model, const HarmonicResponse& r) {
+  const double w = r.omega_rad_s;
+  return (-w * w + 1i * w * model.body.rayleigh_mass_per_s) * r.q;
+}
+
 RandomResponse solve_random(const Model& model, const Modes& modes, const VecX& omegas, const VecX& spectrum,
                             double delta_omega, const MatXc& U, const FrequencyDomainOptions& options) {
   const StripTable& s = model.strips;
@@ -219,7 +224,7 @@ RmsProfiles rms_profiles(const Model& model, const RandomResponse& r) {
     const HarmonicResponse unit{r.omega_rad_s(j), 1.0, r.q_transfer.col(j), r.relative_velocity_transfer.col(j), {},
                                 r.drag_damping_N_s_m2, r.iterations};
     const VecXc load = harmonic_load_per_length(model, unit);
-    variance += inertia_relief_moment<std::complex<double>>(model, load, unit.q).cwiseAbs2() * weight(j);
+    variance += inertia_relief_moment<std::complex<double>>(model, load, unit.q, harmonic_inertial_q(model, unit)).cwiseAbs2() * weight(j);
   }
   p.inertia_relief_moment_N_m = variance.cwiseSqrt();
   p.inertia_relief_stress_Pa = p.inertia_relief_moment_N_m.cwiseQuotient(model.strips.section_modulus_m3);

@@ -45,6 +45,8 @@ HarmonicResponse solve_harmonic(const Model& model, const Modes& modes, double o
 // linearised drag on the relative velocity, minus the inertia (structural + added mass) and the
 // mass-proportional damping, p = a(ρCmA iωU) + c u_r + ω² m v − iω α m v.
 VecXc harmonic_load_per_length(const Model& model, const HarmonicResponse& response);
+// r = q̈ + α q̇ = (−ω² + iωα) q: the generalised inertia of the point masses' d'Alembert forces (n).
+VecXc harmonic_inertial_q(const Model& model, const HarmonicResponse& response);
 
 struct RandomResponse {
   VecX omega_rad_s;              // ω_j (Nf), equally spaced by delta_omega
