@@ -30,7 +30,7 @@ SlenderProfiles with_stress(const slender::Model& model, VecX displacement, VecX
 SlenderProfiles harmonic_profiles(const slender::Model& model, const slender::HarmonicResponse& r) {
   const VecXc load = slender::harmonic_load_per_length(model, r);
   return with_stress(model, (model.phi * r.q).cwiseAbs(), slender::elastic_moment<Complex>(model, r.q).cwiseAbs(),
-                     slender::inertia_relief_moment<Complex>(model, load, r.q).cwiseAbs());
+                     slender::inertia_relief_moment<Complex>(model, load, r.q, slender::harmonic_inertial_q(model, r)).cwiseAbs());
 }
 
 // Per strip (row) of a TD history: |first harmonic| over the window (regular) or σ (random).
