@@ -68,7 +68,7 @@ SeaGrid jonswap_grid(const SlenderSea& sea) {
 SlenderResults solve_slender(const SlenderDeck& deck, double dt, double t_max) {
   slender::Model model = slender::make_model(deck.body, deck.environment);
   slender::Modes modes = slender::compute_modes(model, deck.analysis.modes);
-  SlenderResults out{std::move(model), std::move(modes), 0, {}, {}, {}, {}};
+  SlenderResults out{std::move(model), std::move(modes), 0, {}, {}, {}, {}, {}};
   const slender::Model& m = out.model;
   const SlenderSea& sea = deck.sea;
   const double omega = sea.regular ? kTwoPi / sea.period_s : 0.0, amplitude = 0.5 * sea.height_m;
@@ -87,6 +87,7 @@ SlenderResults solve_slender(const SlenderDeck& deck, double dt, double t_max) {
       out.drag_iterations = r.iterations;
       const slender::RmsProfiles p = slender::rms_profiles(m, r);
       out.frequency_domain = with_stress(m, p.displacement_m, p.bending_moment_N_m, p.inertia_relief_moment_N_m);
+      out.spectra = SlenderSpectra{grid.omega_rad_s, slender::displacement_spectrum(m, r), slender::inertia_relief_spectrum(m, r)};
     }
   }
   if (!deck.analysis.time_domain) return out;

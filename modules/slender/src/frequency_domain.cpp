@@ -212,6 +212,18 @@ MatX displacement_spectrum(const Model& model, const RandomResponse& r) {
   return (model.phi * r.q_transfer).cwiseAbs2() * r.wave_spectrum_m2_s.asDiagonal();
 }
 
+MatX inertia_relief_spectrum(const Model& model, const RandomResponse& r) {
+  MatX spectrum(model.strips.x_m.size(), r.omega_rad_s.size());
+  for (Eigen::Index j = 0; j < r.omega_rad_s.size(); ++j) {
+    const HarmonicResponse unit{r.omega_rad_s(j), 1.0, r.q_transfer.col(j), r.relative_velocity_transfer.col(j), {},
+                                r.drag_damping_N_s_m2, r.iterations};
+    const VecXc load = harmonic_load_per_length(model, unit);
+    spectrum.col(j) = inertia_relief_moment<std::complex<double>>(model, load, unit.q, harmonic_inertial_q(model, unit)).cwiseAbs2() *
+                      r.wave_spectrum_m2_s(j);
+  }
+  return spectrum;
+}
+
 RmsProfiles rms_profiles(const Model& model, const RandomResponse& r) {
   const VecX weight = r.wave_spectrum_m2_s * r.delta_omega_rad_s;
   const MatXc moment = model.strips.bending_stiffness_N_m2.asDiagonal() * (model.phi_curvature * r.q_transfer);
@@ -219,14 +231,7 @@ RmsProfiles rms_profiles(const Model& model, const RandomResponse& r) {
   p.displacement_m = ((model.phi * r.q_transfer).cwiseAbs2() * weight).cwiseSqrt();
   p.bending_moment_N_m = (moment.cwiseAbs2() * weight).cwiseSqrt();
   p.stress_Pa = p.bending_moment_N_m.cwiseQuotient(model.strips.section_modulus_m3);
-  VecX variance = VecX::Zero(model.strips.x_m.size());
-  for (Eigen::Index j = 0; j < r.omega_rad_s.size(); ++j) {
-    const HarmonicResponse unit{r.omega_rad_s(j), 1.0, r.q_transfer.col(j), r.relative_velocity_transfer.col(j), {},
-                                r.drag_damping_N_s_m2, r.iterations};
-    const VecXc load = harmonic_load_per_length(model, unit);
-    variance += inertia_relief_moment<std::complex<double>>(model, load, unit.q, harmonic_inertial_q(model, unit)).cwiseAbs2() * weight(j);
-  }
-  p.inertia_relief_moment_N_m = variance.cwiseSqrt();
+  p.inertia_relief_moment_N_m = ((inertia_relief_spectrum(model, r) * r.delta_omega_rad_s).rowwise().sum()).cwiseSqrt();
   p.inertia_relief_stress_Pa = p.inertia_relief_moment_N_m.cwiseQuotient(model.strips.section_modulus_m3);
   return p;
 }

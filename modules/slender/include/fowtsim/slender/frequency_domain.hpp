@@ -81,5 +81,7 @@ RmsProfiles rms_profiles(const Model& model, const RandomResponse& response);
 
 // Response spectrum of the displacement, S_v(x_i, ω_j) = |V_i(ω_j)|² S_η(ω_j) (N × Nf) [m²·s/rad].
 MatX displacement_spectrum(const Model& model, const RandomResponse& response);
+// Response spectrum of the inertia-relief moment, |M_IR(x_i, ω_j)|² S_η(ω_j) (N × Nf) [N²·m²·s/rad].
+MatX inertia_relief_spectrum(const Model& model, const RandomResponse& response);
 
 }  // namespace fowtsim::slender
