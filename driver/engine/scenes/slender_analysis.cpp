@@ -85,9 +85,9 @@ SlenderResults solve_slender(const SlenderDeck& deck, double dt, double t_max) {
       const slender::RandomResponse r =
           slender::solve_random(m, out.modes, grid.omega_rad_s, grid.spectrum_m2_s, grid.delta_omega_rad_s, table);
       out.drag_iterations = r.iterations;
-      const slender::RmsProfiles p = slender::rms_profiles(m, r);
-      out.frequency_domain = with_stress(m, p.displacement_m, p.bending_moment_N_m, p.inertia_relief_moment_N_m);
       out.spectra = SlenderSpectra{grid.omega_rad_s, slender::displacement_spectrum(m, r), slender::inertia_relief_spectrum(m, r)};
+      const slender::RmsProfiles p = slender::rms_profiles(m, r, out.spectra->moment_inertia_relief_N2m2_s);
+      out.frequency_domain = with_stress(m, p.displacement_m, p.bending_moment_N_m, p.inertia_relief_moment_N_m);
     }
   }
   if (!deck.analysis.time_domain) return out;

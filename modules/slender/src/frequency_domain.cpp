@@ -224,14 +224,16 @@ MatX inertia_relief_spectrum(const Model& model, const RandomResponse& r) {
   return spectrum;
 }
 
-RmsProfiles rms_profiles(const Model& model, const RandomResponse& r) {
+RmsProfiles rms_profiles(const Model& model, const RandomResponse& r) { return rms_profiles(model, r, inertia_relief_spectrum(model, r)); }
+
+RmsProfiles rms_profiles(const Model& model, const RandomResponse& r, const MatX& relief_spectrum) {
   const VecX weight = r.wave_spectrum_m2_s * r.delta_omega_rad_s;
   const MatXc moment = model.strips.bending_stiffness_N_m2.asDiagonal() * (model.phi_curvature * r.q_transfer);
   RmsProfiles p;
   p.displacement_m = ((model.phi * r.q_transfer).cwiseAbs2() * weight).cwiseSqrt();
   p.bending_moment_N_m = (moment.cwiseAbs2() * weight).cwiseSqrt();
   p.stress_Pa = p.bending_moment_N_m.cwiseQuotient(model.strips.section_modulus_m3);
-  p.inertia_relief_moment_N_m = ((inertia_relief_spectrum(model, r) * r.delta_omega_rad_s).rowwise().sum()).cwiseSqrt();
+  p.inertia_relief_moment_N_m = ((relief_spectrum * r.delta_omega_rad_s).rowwise().sum()).cwiseSqrt();
   p.inertia_relief_stress_Pa = p.inertia_relief_moment_N_m.cwiseQuotient(model.strips.section_modulus_m3);
   return p;
 }

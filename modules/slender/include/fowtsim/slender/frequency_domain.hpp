@@ -78,6 +78,8 @@ struct RmsProfiles {
 // The inertia-relief moment's H(ω_j) is inertia_relief_moment on the load per unit wave amplitude
 // (harmonic_load_per_length of the response at ω_j with the converged linear drag).
 RmsProfiles rms_profiles(const Model& model, const RandomResponse& response);
+// The same with the inertia-relief moment's spectrum already at hand (inertia_relief_spectrum).
+RmsProfiles rms_profiles(const Model& model, const RandomResponse& response, const MatX& inertia_relief_spectrum);
 
 // Response spectrum of the displacement, S_v(x_i, ω_j) = |V_i(ω_j)|² S_η(ω_j) (N × Nf) [m²·s/rad].
 MatX displacement_spectrum(const Model& model, const RandomResponse& response);
