@@ -52,6 +52,7 @@ struct AnalysisKeys {
   int modes = 0;
   double transient_s = 0.0;
   std::vector<double> stations_m;
+  double drag_tolerance = 1e-6;
 };
 
 DeckSection<EndKeys> end_section(const char* supports_doc, std::vector<std::string> supports) {
@@ -179,7 +180,11 @@ const DeckSection<AnalysisKeys>& analysis_section() {
              &AnalysisKeys::transient_s)
         .key("stations_m", Schema::sequence(Schema::number()).optional()
                                .doc("time-series stations, x from the bottom end (channels Stn1…)"),
-             &AnalysisKeys::stations_m);
+             &AnalysisKeys::stations_m)
+        .key("drag_tolerance", Schema::number().at_least(1e-14).at_most(1e-2).default_value(1e-6)
+                                   .doc("frequency domain: the drag linearisation stops when γ changes by less than this "
+                                        "share of its largest value (1e-6: far below the linearisation's own 1 % error)"),
+             &AnalysisKeys::drag_tolerance);
     return a;
   }();
   return section;
@@ -312,7 +317,8 @@ SlenderDeck read_slender_deck(const io::ValidatedDeck& deck, double time_step_s,
   d.sea = sea_of(deck, sea_section().read(deck.section("sea")));
   AnalysisKeys analysis{"both", 0, 0.0, {}};
   if (deck.has("analysis")) analysis_section().read_into(deck.section("analysis"), analysis);
-  d.analysis = {analysis.domain != "time", analysis.domain != "frequency", analysis.modes, analysis.transient_s, analysis.stations_m};
+  d.analysis = {analysis.domain != "time", analysis.domain != "frequency", analysis.modes, analysis.transient_s, analysis.stations_m,
+                analysis.drag_tolerance};
   const int shapes = static_cast<int>(d.body.shapes.size());
   if (d.analysis.modes > shapes)
     bad(deck, "analysis.modes", fmt::format("at most the {} shape functions", shapes), fmt::format("{} modes of {} shapes", d.analysis.modes, shapes));

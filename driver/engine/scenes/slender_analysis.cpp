@@ -77,13 +77,15 @@ SlenderResults solve_slender(const SlenderDeck& deck, double dt, double t_max) {
   const slender::MatXc table = sea.regular ? slender::MatXc{} : slender::velocity_transfer_table(m, grid.omega_rad_s);
 
   if (deck.analysis.frequency_domain) {
+    slender::FrequencyDomainOptions options;
+    options.tolerance = deck.analysis.drag_tolerance;
     if (sea.regular) {
-      const slender::HarmonicResponse r = slender::solve_harmonic(m, out.modes, omega, amplitude, U);
+      const slender::HarmonicResponse r = slender::solve_harmonic(m, out.modes, omega, amplitude, U, options);
       out.drag_iterations = r.iterations;
       out.frequency_domain = harmonic_profiles(m, r);
     } else {
       const slender::RandomResponse r =
-          slender::solve_random(m, out.modes, grid.omega_rad_s, grid.spectrum_m2_s, grid.delta_omega_rad_s, table);
+          slender::solve_random(m, out.modes, grid.omega_rad_s, grid.spectrum_m2_s, grid.delta_omega_rad_s, table, options);
       out.drag_iterations = r.iterations;
       out.spectra = SlenderSpectra{grid.omega_rad_s, slender::displacement_spectrum(m, r), slender::inertia_relief_spectrum(m, r)};
       const slender::RmsProfiles p = slender::rms_profiles(m, r, out.spectra->moment_inertia_relief_N2m2_s);
