@@ -201,7 +201,7 @@ int main(int argc, char** argv) {
                      "directory holding reference/ (default ../shared next to the repository: " + shared_dir + ")");
   std::vector<std::string> bench_cases;
   auto* bench = app.add_subcommand("bench", "benchmark run time against error");
-  bench->add_option("cases", bench_cases, "cases (default all): coupling, beam, hydro, waves, aero, multibody, startup, turbine, stability, riser");
+  bench->add_option("cases", bench_cases, "cases (default all): coupling, beam, hydro, waves, aero, multibody, startup, turbine, stability, riser, slender");
   bench->add_option("--shared", shared_dir, "directory holding reference/ (default " + shared_dir + ")");
 
   std::string wind_deck, wind_out;

@@ -79,9 +79,15 @@ TEST_CASE("fowtsim verify pipe: seed Table 3.1 and the classical thresholds of p
   check_case("pipe", 19, 0);
 }
 
+TEST_CASE("fowtsim verify screening: OC3 free-floating frequencies, operating points, FD/TD std", "[verification][screening]") {
+  // Operating points (2 pitch + 3 rotor speeds), FD/TD std of heave, pitch, TwrBsMyt (3); with the
+  // WAMIT files beside the reference data the four free-floating frequencies.
+  check_case("screening", 8, 4);
+}
+
 TEST_CASE("fowtsim verify all includes the module cases", "[unit]") {
   const std::vector<std::string> names = verification_case_names();
-  for (const char* name : {"aero", "wind", "multibody", "control", "flexbody", "slender", "pipe"}) {
+  for (const char* name : {"aero", "wind", "multibody", "control", "flexbody", "slender", "pipe", "screening"}) {
     INFO(name);
     CHECK(std::find(names.begin(), names.end(), name) != names.end());
   }

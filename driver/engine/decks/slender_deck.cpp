@@ -1,5 +1,6 @@
 #include "decks/slender_deck.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -37,6 +38,8 @@ struct BodyKeys {
   EndKeys bottom, top;
   double top_tension_N = 0.0, rayleigh_mass_1_s = 0.0, rayleigh_stiffness_s = 0.0;
   ShapeKeys shapes;
+  std::optional<std::vector<slender::PointSpring>> point_springs;
+  std::optional<std::vector<slender::PointMass>> point_masses;
 };
 struct SeaKeys {
   std::string model;
@@ -49,6 +52,7 @@ struct AnalysisKeys {
   int modes = 0;
   double transient_s = 0.0;
   std::vector<double> stations_m;
+  double drag_tolerance = 1e-6;
 };
 
 DeckSection<EndKeys> end_section(const char* supports_doc, std::vector<std::string> supports) {
@@ -82,19 +86,34 @@ const DeckSection<BodyKeys>& body_section() {
         .key("strips", Schema::integer().at_least(1).at_most(100000).default_value(1).doc("equal strips the segment is cut into"),
              &SegmentKeys::strips);
     DeckSection<ShapeKeys> shapes;
-    shapes.key("family", Schema::choice({"clamped_free", "pinned_pinned", "floating"})
-                             .doc("clamped_free: uniform cantilever modes; pinned_pinned: sin(nπx/L); floating: sway, "
-                                  "rotation about rotation_centre_m, then `count` sines"),
+    shapes.key("family", Schema::choice({"clamped_free", "free_clamped", "pinned_pinned", "floating"})
+                             .doc("clamped_free: uniform cantilever modes; free_clamped: the same clamped at the top (a hanging "
+                                  "body); pinned_pinned: sin(nπx/L); floating: sway, rotation about rotation_centre_m, then `count` sines"),
                &ShapeKeys::family)
         .key("count", Schema::integer().at_least(0).at_most(200).doc("number of shape functions (floating: of flexible sines)"),
              &ShapeKeys::count)
         .key("rotation_centre_m", Schema::number().unit("m").default_value(0.0).doc("floating: x of the rotation shape's centre"),
              &ShapeKeys::rotation_centre_m);
+    DeckSection<slender::PointSpring> spring;
+    spring.key("x_m", Schema::number().unit("m").at_least(0.0).doc("where, from the bottom end (0 ≤ x ≤ L)"), &slender::PointSpring::x_m)
+        .key("translational_N_m", Schema::number().unit("N_m").at_least(0.0).default_value(0.0)
+                                      .doc("spring on the deflection there (a fairlead's mooring stiffness)"),
+             &slender::PointSpring::translational_N_m)
+        .key("rotational_N_m_rad", Schema::number().unit("N_m_rad").at_least(0.0).default_value(0.0).doc("spring on the slope there"),
+             &slender::PointSpring::rotational_N_m_rad);
+    DeckSection<slender::PointMass> mass;
+    mass.key("x_m", Schema::number().unit("m").at_least(0.0).doc("where, from the bottom end (0 ≤ x ≤ L)"), &slender::PointMass::x_m)
+        .key("mass_kg", Schema::number().unit("kg").at_least(0.0).doc("lumped mass (the RNA on a tower): inertia and weight"),
+             &slender::PointMass::mass_kg)
+        .key("rotary_inertia_kg_m2", Schema::number().unit("kg_m2").at_least(0.0).default_value(0.0)
+                                         .doc("about the axis normal to the bending plane, on the slope's acceleration"),
+             &slender::PointMass::rotary_inertia_kg_m2);
     DeckSection<BodyKeys> b;
     b.list("segments", segment, &BodyKeys::segments, 1, "uniform segments from the bottom end (x = 0) to the top (x = L)")
         .section("bottom", end_section("free | pinned | clamped", {"free", "pinned", "clamped"}), &BodyKeys::bottom, true,
                  "the bottom end (x = 0)")
-        .section("top", end_section("free | pinned (the inertia-relief moment takes no clamped top)", {"free", "pinned"}),
+        .section("top", end_section("free | pinned | clamped (clamped: over a free bottom without springs, a hanging body)",
+                                    {"free", "pinned", "clamped"}),
                  &BodyKeys::top, true, "the top end (x = L)")
         .key("top_tension_N", Schema::number().unit("N").at_least(0.0).default_value(0.0).doc("effective tension at the top (tensioner)"),
              &BodyKeys::top_tension_N)
@@ -102,7 +121,9 @@ const DeckSection<BodyKeys>& body_section() {
              &BodyKeys::rayleigh_mass_1_s)
         .key("rayleigh_stiffness_s", Schema::number().unit("s").at_least(0.0).default_value(0.0).doc("β of C = αM + βK"),
              &BodyKeys::rayleigh_stiffness_s)
-        .section("shapes", shapes, &BodyKeys::shapes, false, "shape functions v(x, t) = Σ φ_m(x) q_m(t)");
+        .section("shapes", shapes, &BodyKeys::shapes, false, "shape functions v(x, t) = Σ φ_m(x) q_m(t)")
+        .list("point_springs", spring, &BodyKeys::point_springs, 1, "springs at points along the body (fairleads, guides)")
+        .list("point_masses", mass, &BodyKeys::point_masses, 1, "lumped masses at points along the body (the RNA, buoys)");
     return b;
   }();
   return section;
@@ -159,7 +180,11 @@ const DeckSection<AnalysisKeys>& analysis_section() {
              &AnalysisKeys::transient_s)
         .key("stations_m", Schema::sequence(Schema::number()).optional()
                                .doc("time-series stations, x from the bottom end (channels Stn1…)"),
-             &AnalysisKeys::stations_m);
+             &AnalysisKeys::stations_m)
+        .key("drag_tolerance", Schema::number().at_least(1e-14).at_most(1e-2).default_value(1e-6)
+                                   .doc("frequency domain: the drag linearisation stops when γ changes by less than this "
+                                        "share of its largest value (1e-6: far below the linearisation's own 1 % error)"),
+             &AnalysisKeys::drag_tolerance);
     return a;
   }();
   return section;
@@ -204,12 +229,32 @@ slender::BodyDescription body_of(const io::ValidatedDeck& deck, const BodyKeys& 
   b.bottom_springs = {k.bottom.translational_spring_N_m, k.bottom.rotational_spring_N_m_rad};
   b.top_springs = {k.top.translational_spring_N_m, k.top.rotational_spring_N_m_rad};
   b.top_tension_N = k.top_tension_N;
+  if (b.top_support == slender::Support::Clamped) {
+    // The inertia-relief moment then sums from the bottom end, whose conditions must be known.
+    if (b.bottom_support != slender::Support::Free || b.bottom_springs.translational_N_m != 0.0 || b.bottom_springs.rotational_N_m_rad != 0.0)
+      bad(deck, "slender.top.support", "a free bottom without springs under a clamped top",
+          "a clamped top over a supported bottom: the inertia-relief moment would need a reaction that statics does not give");
+    if (b.top_tension_N != 0.0)
+      bad(deck, "slender.top_tension_N", "0 under a clamped top", "a hanging body's tension is the weight below each section");
+  }
+  // x ≤ L, the top end given as the segments' sum (to its rounding: then exactly L).
+  const auto on_body = [&](const char* list, std::size_t i, double& x) {
+    if (x > length * (1.0 + 1e-9))
+      bad(deck, fmt::format("slender.{}[{}].x_m", list, i), fmt::format("at most the body's length {} m", length),
+          fmt::format("x = {} m is beyond the top end", x));
+    x = std::min(x, length);
+  };
+  if (k.point_springs) b.point_springs = *k.point_springs;
+  if (k.point_masses) b.point_masses = *k.point_masses;
+  for (std::size_t i = 0; i < b.point_springs.size(); ++i) on_body("point_springs", i, b.point_springs[i].x_m);
+  for (std::size_t i = 0; i < b.point_masses.size(); ++i) on_body("point_masses", i, b.point_masses[i].x_m);
   b.rayleigh_mass_per_s = k.rayleigh_mass_1_s;
   b.rayleigh_stiffness_s = k.rayleigh_stiffness_s;
   const ShapeKeys& sh = k.shapes;
   if (sh.family != "floating" && sh.count < 1)
     bad(deck, "slender.shapes.count", "at least 1", sh.family + " needs at least one shape function");
   b.shapes = sh.family == "clamped_free"    ? slender::clamped_free_shapes(sh.count, length)
+             : sh.family == "free_clamped"  ? slender::free_clamped_shapes(sh.count, length)
              : sh.family == "pinned_pinned" ? slender::pinned_pinned_shapes(sh.count, length)
                                             : slender::floating_shapes(sh.count, length, sh.rotation_centre_m);
   return b;
@@ -272,7 +317,8 @@ SlenderDeck read_slender_deck(const io::ValidatedDeck& deck, double time_step_s,
   d.sea = sea_of(deck, sea_section().read(deck.section("sea")));
   AnalysisKeys analysis{"both", 0, 0.0, {}};
   if (deck.has("analysis")) analysis_section().read_into(deck.section("analysis"), analysis);
-  d.analysis = {analysis.domain != "time", analysis.domain != "frequency", analysis.modes, analysis.transient_s, analysis.stations_m};
+  d.analysis = {analysis.domain != "time", analysis.domain != "frequency", analysis.modes, analysis.transient_s, analysis.stations_m,
+                analysis.drag_tolerance};
   const int shapes = static_cast<int>(d.body.shapes.size());
   if (d.analysis.modes > shapes)
     bad(deck, "analysis.modes", fmt::format("at most the {} shape functions", shapes), fmt::format("{} modes of {} shapes", d.analysis.modes, shapes));

@@ -26,6 +26,7 @@ struct SlenderAnalysis {
   int modes = 0;                     // lowest modes kept (0: all)
   double transient_s = 0.0;          // time domain: discarded before the statistics
   std::vector<double> stations_m;    // time-series stations, x from the bottom end [m]
+  double drag_tolerance = 1e-6;      // frequency domain: the drag linearisation's convergence on γ [-]
 };
 
 struct SlenderDeck {

@@ -55,6 +55,9 @@ io::ValidatedDeck linearisation_deck(io::LoadedDeck deck, const std::vector<std:
     const double window = std::max(1.0, 4.0 * (dt ? std::stod(dt->scalar) : 0.0));
     settings.push_back("hydro.potential_flow.radiation=convolution");
     settings.push_back(fmt::format("hydro.potential_flow.radiation_window_s={}", window));
+    // Still water: the scene needs no excitation table. The screening reads WAMIT's .3 (2 MB for
+    // OC3, most of a WAMIT deck's set-up) once itself (wamit_excitation).
+    settings.push_back("hydro.potential_flow.excitation=false");
   }
   io::apply_settings(deck, settings);
   return io::validate(floating_scene_schema(), std::move(deck));
@@ -311,6 +314,7 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
   if (deck.has("hydro")) {  // the linearisation's: its radiation kernel is the short one
     hydro = read_hydro_deck(deck.section("hydro"), deck.number("simulation.dt_s"));
     radiation = radiation_coefficients(deck.section("hydro"), hydro->params);
+    hydro->excitation = wamit_excitation(source.section("hydro"), hydro->params);
     strips = platform_strips(hydro->params);
   }
 
@@ -511,7 +515,7 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
   for (std::size_t i = 0; i < f.size() && hydro; ++i) {
     const double w = 2.0 * kPi * f[i];
     if (hydro->params.potential_flow) {
-      if (hydro->excitation && hydro->params.potential_flow->excitation)
+      if (hydro->excitation)
         for (int k = 0; k < 6; ++k) excitation[i][k] = excitation_transfer(*hydro->excitation, k, w, sea.heading_deg);
       if (radiation) radiation->at(w, added[i], damping[i]);
     } else {

@@ -218,4 +218,17 @@ std::optional<RadiationCoefficients> radiation_coefficients(const io::ValidatedD
   return r;
 }
 
+std::optional<io::WamitExcitation> wamit_excitation(const io::ValidatedDeck& hydro_section, const hydro::Params& hydro) {
+  if (!hydro_section.has("potential_flow")) return std::nullopt;
+  const io::ValidatedDeck flow = hydro_section.section("potential_flow");
+  if (!flow.boolean("excitation")) return std::nullopt;
+  const io::WamitScales scales{hydro.water_density_kg_m3, hydro.gravity_m_s2, flow.number("length_scale_m")};
+  const std::filesystem::path root = beside_deck(flow, "wamit_root");
+  try {
+    return io::read_wamit_excitation(root.string() + ".3", scales);
+  } catch (const InputError& e) {
+    throw InputError(e.context(), where(flow, "wamit_root") + ": " + e.message());
+  }
+}
+
 }  // namespace fowtsim::driver

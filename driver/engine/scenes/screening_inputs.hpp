@@ -96,4 +96,9 @@ struct RadiationCoefficients {
 // The hydro section's WAMIT files (potential_flow.wamit_root), or none without potential flow.
 std::optional<RadiationCoefficients> radiation_coefficients(const io::ValidatedDeck& hydro_section, const hydro::Params& hydro);
 
+// WAMIT's first-order excitation table (ROOT.3) when the deck as written has potential-flow
+// excitation on (hydro_section: the source deck's; the screening's own linearisation deck turns
+// it off so that its scene does not read the file again), else none.
+std::optional<io::WamitExcitation> wamit_excitation(const io::ValidatedDeck& hydro_section, const hydro::Params& hydro);
+
 }  // namespace fowtsim::driver

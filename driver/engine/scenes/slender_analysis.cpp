@@ -30,7 +30,7 @@ SlenderProfiles with_stress(const slender::Model& model, VecX displacement, VecX
 SlenderProfiles harmonic_profiles(const slender::Model& model, const slender::HarmonicResponse& r) {
   const VecXc load = slender::harmonic_load_per_length(model, r);
   return with_stress(model, (model.phi * r.q).cwiseAbs(), slender::elastic_moment<Complex>(model, r.q).cwiseAbs(),
-                     slender::inertia_relief_moment<Complex>(model, load, r.q).cwiseAbs());
+                     slender::inertia_relief_moment<Complex>(model, load, r.q, slender::harmonic_inertial_q(model, r)).cwiseAbs());
 }
 
 // Per strip (row) of a TD history: |first harmonic| over the window (regular) or σ (random).
@@ -57,14 +57,18 @@ SeaGrid jonswap_grid(const SlenderSea& sea) {
   const int last = static_cast<int>(std::floor(sea.max_omega_rad_s / g.delta_omega_rad_s + 1e-9));
   const int count = std::max(0, last - g.first_index + 1);
   g.omega_rad_s = VecX::LinSpaced(count, g.first_index, last) * g.delta_omega_rad_s;
-  g.spectrum_m2_s = g.omega_rad_s.unaryExpr([&](double w) { return waves::jonswap_density(w, sea.hs_m, sea.tp_s, sea.gamma); });
+  // C(γ) once: it is an integral over the spectrum's shape (most of a frequency-domain case's time
+  // if taken at every ω).
+  const double normalisation = waves::jonswap_normalisation(sea.gamma);
+  g.spectrum_m2_s = g.omega_rad_s.unaryExpr(
+      [&](double w) { return waves::jonswap_density(w, sea.hs_m, sea.tp_s, sea.gamma, normalisation); });
   return g;
 }
 
 SlenderResults solve_slender(const SlenderDeck& deck, double dt, double t_max) {
   slender::Model model = slender::make_model(deck.body, deck.environment);
   slender::Modes modes = slender::compute_modes(model, deck.analysis.modes);
-  SlenderResults out{std::move(model), std::move(modes), 0, {}, {}, {}, {}};
+  SlenderResults out{std::move(model), std::move(modes), 0, {}, {}, {}, {}, {}};
   const slender::Model& m = out.model;
   const SlenderSea& sea = deck.sea;
   const double omega = sea.regular ? kTwoPi / sea.period_s : 0.0, amplitude = 0.5 * sea.height_m;
@@ -73,15 +77,18 @@ SlenderResults solve_slender(const SlenderDeck& deck, double dt, double t_max) {
   const slender::MatXc table = sea.regular ? slender::MatXc{} : slender::velocity_transfer_table(m, grid.omega_rad_s);
 
   if (deck.analysis.frequency_domain) {
+    slender::FrequencyDomainOptions options;
+    options.tolerance = deck.analysis.drag_tolerance;
     if (sea.regular) {
-      const slender::HarmonicResponse r = slender::solve_harmonic(m, out.modes, omega, amplitude, U);
+      const slender::HarmonicResponse r = slender::solve_harmonic(m, out.modes, omega, amplitude, U, options);
       out.drag_iterations = r.iterations;
       out.frequency_domain = harmonic_profiles(m, r);
     } else {
       const slender::RandomResponse r =
-          slender::solve_random(m, out.modes, grid.omega_rad_s, grid.spectrum_m2_s, grid.delta_omega_rad_s, table);
+          slender::solve_random(m, out.modes, grid.omega_rad_s, grid.spectrum_m2_s, grid.delta_omega_rad_s, table, options);
       out.drag_iterations = r.iterations;
-      const slender::RmsProfiles p = slender::rms_profiles(m, r);
+      out.spectra = SlenderSpectra{grid.omega_rad_s, slender::displacement_spectrum(m, r), slender::inertia_relief_spectrum(m, r)};
+      const slender::RmsProfiles p = slender::rms_profiles(m, r, out.spectra->moment_inertia_relief_N2m2_s);
       out.frequency_domain = with_stress(m, p.displacement_m, p.bending_moment_N_m, p.inertia_relief_moment_N_m);
     }
   }

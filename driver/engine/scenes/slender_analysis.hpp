@@ -21,11 +21,19 @@ struct SlenderProfiles {
   VecX stress_inertia_relief_Pa;
 };
 
+// Frequency-domain response spectra in a JONSWAP sea, per strip (N × Nf) on the sea's grid.
+struct SlenderSpectra {
+  VecX omega_rad_s;
+  MatX displacement_m2_s;           // S_v [m²·s/rad]
+  MatX moment_inertia_relief_N2m2_s;  // S of the inertia-relief moment [N²·m²·s/rad]
+};
+
 struct SlenderResults {
   slender::Model model;
   slender::Modes modes;
   int drag_iterations = 0;                           // of the frequency domain's linearisation
   std::optional<SlenderProfiles> frequency_domain;
+  std::optional<SlenderSpectra> spectra;             // frequency domain, JONSWAP sea
   std::optional<SlenderProfiles> time_domain;        // over [transient, t_max]
   std::optional<slender::TimeDomainResult> history;  // at every step dt
   VecX wave_elevation_m;                             // η at the body at every step (time domain)

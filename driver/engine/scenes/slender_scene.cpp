@@ -78,6 +78,22 @@ std::vector<std::string> peaks(const SlenderResults& r, bool regular) {
 struct Station {
   Eigen::Index strip;
 };
+// The frequency domain's response spectra at the stations, <output>.spectra.csv (JONSWAP sea):
+// ω [rad/s], then per station S of the displacement [m²·s/rad] and of the inertia-relief moment
+// [kN²·m²·s/rad], one-sided in ω (the time-series channels' units squared per rad/s).
+WholeFile spectra_csv(const SlenderSpectra& s, const std::vector<Station>& stations) {
+  std::string csv = "omega_rad_s";
+  for (std::size_t k = 0; k < stations.size(); ++k) csv += fmt::format(",Stn{0}Disp,Stn{0}MomIR", k + 1);
+  csv += '\n';
+  for (Eigen::Index j = 0; j < s.omega_rad_s.size(); ++j) {
+    csv += fmt::format("{:.10g}", s.omega_rad_s(j));
+    for (const Station& st : stations)
+      csv += fmt::format(",{:.10g},{:.10g}", s.displacement_m2_s(st.strip, j), s.moment_inertia_relief_N2m2_s(st.strip, j) / 1e6);
+    csv += '\n';
+  }
+  return {".spectra.csv", std::move(csv)};
+}
+
 std::vector<ChannelInfo> channels(const SlenderResults& r, const std::vector<Station>& stations) {
   std::vector<ChannelInfo> all = {{"WaveElev", "m", "wave elevation at the body", "slender"}};
   for (std::size_t k = 0; k < stations.size(); ++k) {
@@ -140,7 +156,8 @@ RunReport run_slender_scene(const RunRequest& request, const ProgressCallback& p
   const SlenderDeck& d = c.deck;
   const SlenderResults r = located(deck.section("slender"), [&] { return solve_slender(d, c.dt_s, c.t_max_s); });
   const std::vector<Station> stations = stations_of(r.model, d.analysis.stations_m);
-  WholeFile profiles = profiles_csv(r, d.sea.regular);
+  std::vector<WholeFile> tables{profiles_csv(r, d.sea.regular)};
+  if (r.spectra) tables.push_back(spectra_csv(*r.spectra, stations));
 
   RunReport report;
   if (r.history) {
@@ -150,7 +167,7 @@ RunReport run_slender_scene(const RunRequest& request, const ProgressCallback& p
     for (std::size_t i : picked) scene.written.push_back(all[i]);
     scene.metadata.extra = {{"scene", "slender"}};
     if (!d.sea.regular) scene.metadata.seeds = {d.sea.seed};
-    scene.whole_files.push_back(std::move(profiles));
+    for (WholeFile& t : tables) scene.whole_files.push_back(std::move(t));
     // The module integrates the whole record at once (it has no stepping state yet, modules/slender
     // README "Not done"); the loop replays it step by step into the writers.
     Eigen::Index step = 0;
@@ -173,7 +190,7 @@ RunReport run_slender_scene(const RunRequest& request, const ProgressCallback& p
     report.results.push_back(solution(r));
   } else {
     // No time series: the table alone, still under the run's lock and written whole.
-    OutputSet outputs(output_plan(request, deck).base, "none", {std::move(profiles)});
+    OutputSet outputs(output_plan(request, deck).base, "none", std::move(tables));
     outputs.begin({}, {});
     outputs.finish({0.0, "completed", 0.0, {}});
     report.outputs = outputs.paths();

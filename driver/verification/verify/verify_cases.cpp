@@ -27,6 +27,7 @@ void bench_startup(std::FILE* out);  // bench_startup.cpp
 void bench_turbine(std::FILE* out);    // bench_flexible_turbine.cpp
 void bench_stability(std::FILE* out);  // bench_stability.cpp
 void bench_riser(std::FILE* out);      // bench_riser.cpp
+void bench_slender(std::FILE* out);    // bench_slender.cpp
 std::vector<VerificationRow> verify_sea(std::FILE* out);  // verify_sea.cpp
 std::vector<VerificationRow> verify_pipe(std::FILE* out);  // verify_pipe.cpp
 void bench_hydro(std::FILE* out);
@@ -35,7 +36,7 @@ void bench_waves(std::FILE* out);
 std::vector<std::string> verification_case_names() {
   return {"coupling", "beam-rollup", "beam-curved", "beam-timestep", "beam-beamdyn", "beam-frequencies", "pipe", "sea",
           "aero",     "wind",        "multibody",   "control",       "flexbody",     "slender",     "free-decay",   "turbine-validation",
-          "turbine-oc3"};
+          "turbine-oc3", "screening"};
 }
 
 std::vector<VerificationRow> run_verification_case(const std::string& name, std::FILE* out) {
@@ -53,6 +54,7 @@ std::vector<VerificationRow> run_verification_case(const std::string& name, std:
   if (name == "control") return verify_control(out);
   if (name == "flexbody") return verify_flexbody(out);  // verify_flexbody.cpp
   if (name == "slender") return verify_slender(out);  // verify_slender.cpp
+  if (name == "screening") return verify_screening(out);  // verify_screening.cpp
   if (name == "free-decay") return verify_free_decay(out);
   if (name == "turbine-validation") return verify_turbine_validation(out);
   if (name == "turbine-oc3") return verify_turbine_oc3(out);
@@ -110,7 +112,7 @@ std::filesystem::path default_shared_dir() {
 }
 
 std::vector<std::string> benchmark_case_names() {
-  return {"coupling", "beam", "hydro", "waves", "aero", "multibody", "startup", "turbine", "stability", "riser"};
+  return {"coupling", "beam", "hydro", "waves", "aero", "multibody", "startup", "turbine", "stability", "riser", "slender"};
 }
 
 std::filesystem::path source_input(const std::string& relative) {
@@ -131,8 +133,9 @@ void run_benchmark_case(const std::string& name, std::FILE* out) {
   if (name == "turbine") return bench_turbine(out);
   if (name == "stability") return bench_stability(out);
   if (name == "riser") return bench_riser(out);
+  if (name == "slender") return bench_slender(out);
   if (name != "coupling") {
-    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody, startup, turbine, stability, riser"}, fmt::format("unknown benchmark case '{}'", name));
+    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody, startup, turbine, stability, riser, slender"}, fmt::format("unknown benchmark case '{}'", name));
   }
   const ToyProblem problem = study_problem();
   constexpr double kTmax = 200.0;

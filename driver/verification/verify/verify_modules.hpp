@@ -26,5 +26,8 @@ std::vector<VerificationRow> verify_flexbody(std::FILE* out);
 // Seed 004's slender bodies (modules/slender) on inputs/slender/: riser modes against the closed
 // form, FD vs TD (drag linearisation) in a regular wave and a JONSWAP sea, EI v'' vs inertia relief.
 std::vector<VerificationRow> verify_slender(std::FILE* out);
+// Issue 25's screening of the floating turbine: OC3 free-floating frequencies against OpenFAST's free
+// decays, operating points, FD/TD std over a periodic sea; prints the time per screening case.
+std::vector<VerificationRow> verify_screening(std::FILE* out);
 
 }  // namespace fowtsim::driver

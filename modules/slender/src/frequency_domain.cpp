@@ -50,6 +50,81 @@ VecXc morison_excitation(const StripTable& s, const VecX& drag_damping, double o
          drag_damping.cast<std::complex<double>>().cwiseProduct(flow);
 }
 
+// A · B for a real A and a complex B, as two real products (a quarter of a complex product's work).
+MatXc real_times(const MatX& a, const MatXc& b) {
+  MatXc out(a.rows(), b.cols());
+  out.real() = a * b.real();
+  out.imag() = a * b.imag();
+  return out;
+}
+
+// solve_generalised for every frequency of a random sea under one drag damping (the drag
+// linearisation's inner loop): what does not change with ω — K⁻¹, the modal damping Ψᵀ C Ψ — is
+// formed once per drag damping, and the generalised loads Φᵀ diag(Δx)(iω ρC_mA + c) U of all
+// frequencies by two matrix products (the inertia part once per sea), so a frequency costs a
+// z × z solve. The same algebra as solve_generalised, reordered.
+class RandomSeaSystem {
+ public:
+  RandomSeaSystem(const Model& model, const Modes& modes, const VecX& omegas, const MatXc& flow, Recovery recovery)
+      : model_(model), modes_(modes), omegas_(omegas), flow_(flow),
+        weighted_phi_t_(model.phi.transpose() * model.strips.dx_m.asDiagonal()),
+        mode_acceleration_(recovery == Recovery::ModeAcceleration && modes.shapes.cols() < model.mass.rows()) {
+    const MatX inertia = weighted_phi_t_ * model.strips.inertia_coefficient_kg_m.asDiagonal();
+    inertia_load_ = real_times(inertia, flow);
+    for (Eigen::Index j = 0; j < omegas.size(); ++j) inertia_load_.col(j) *= 1i * omegas(j);
+    if (!mode_acceleration_) return;
+    const Eigen::LLT<MatX> stiffness(model.stiffness);
+    if (stiffness.info() != Eigen::Success)
+      throw InputError({"slender.frequency_domain", std::nullopt, "K", "add end springs or keep every mode"},
+                       "mode acceleration needs K positive definite");
+    flexibility_ = stiffness.solve(MatX::Identity(model.mass.rows(), model.mass.cols()));
+    flexibility_mass_psi_ = flexibility_ * model.mass * modes.shapes;
+  }
+
+  // q per unit amplitude at every ω_j (n × Nf) under the drag damping c per strip.
+  void solve(const VecX& drag_damping, MatXc& q) {
+    const MatX damping = model_.structural_damping + weighted_phi_t_ * drag_damping.asDiagonal() * model_.phi;
+    const MatX modal_damping = modes_.shapes.transpose() * damping * modes_.shapes;
+    const MatX drag = weighted_phi_t_ * drag_damping.asDiagonal();
+    load_ = inertia_load_ + real_times(drag, flow_);
+    modal_load_ = real_times(modes_.shapes.transpose(), load_);
+    const auto z = modes_.shapes.cols();
+    MatXc a(z, omegas_.size());
+    MatXc dynamic(z, z);
+    Eigen::PartialPivLU<MatXc> lu(z);
+    for (Eigen::Index j = 0; j < omegas_.size(); ++j) {
+      const double w = omegas_(j);
+      dynamic = (1i * w) * modal_damping.cast<std::complex<double>>();
+      dynamic.diagonal().array() += (modes_.omega_rad_s.array().square() - w * w).cast<std::complex<double>>();
+      lu.compute(dynamic);
+      a.col(j) = lu.solve(modal_load_.col(j));
+    }
+    if (!mode_acceleration_) {
+      q = real_times(modes_.shapes, a);
+      return;
+    }
+    // q = K⁻¹[Q + ω² MΨa − iω CΨa].
+    const MatX flexibility_damping_psi = flexibility_ * damping * modes_.shapes;
+    MatXc inertial = a, viscous = a;
+    for (Eigen::Index j = 0; j < omegas_.size(); ++j) {
+      inertial.col(j) *= omegas_(j) * omegas_(j);
+      viscous.col(j) *= -1i * omegas_(j);
+    }
+    q = real_times(flexibility_, load_) + real_times(flexibility_mass_psi_, inertial) + real_times(flexibility_damping_psi, viscous);
+  }
+
+ private:
+  const Model& model_;
+  const Modes& modes_;
+  const VecX& omegas_;
+  const MatXc& flow_;                  // U (N × Nf)
+  MatX weighted_phi_t_;                // Φᵀ diag(Δx) (n × N)
+  MatXc inertia_load_;                 // Φᵀ diag(Δx ρC_mA) U iω (n × Nf)
+  MatXc load_, modal_load_;            // Q (n × Nf), Ψᵀ Q (z × Nf)
+  bool mode_acceleration_;
+  MatX flexibility_, flexibility_mass_psi_;  // K⁻¹, K⁻¹MΨ
+};
+
 }  // namespace
 
 VecXc solve_generalised(const Model& model, const Modes& modes, double omega, const VecXc& force,
@@ -102,6 +177,11 @@ VecXc harmonic_load_per_length(const Model& model, const HarmonicResponse& r) {
          inertia_factor * s.mass_kg_m.cast<std::complex<double>>().cwiseProduct(v);
 }
 
+VecXc harmonic_inertial_q(const Model& model, const HarmonicResponse& r) {
+  const double w = r.omega_rad_s;
+  return (-w * w + 1i * w * model.body.rayleigh_mass_per_s) * r.q;
+}
+
 RandomResponse solve_random(const Model& model, const Modes& modes, const VecX& omegas, const VecX& spectrum,
                             double delta_omega, const MatXc& U, const FrequencyDomainOptions& options) {
   const StripTable& s = model.strips;
@@ -116,13 +196,12 @@ RandomResponse solve_random(const Model& model, const Modes& modes, const VecX& 
     return VecX((transfer.cwiseAbs2() * (spectrum * delta_omega)).cwiseSqrt());
   };
   RandomResponse r{omegas, delta_omega, spectrum, MatXc(model.mass.rows(), Nf), MatXc(N, Nf), sigma_of(U), {}, 0};
+  RandomSeaSystem system(model, modes, omegas, U, options.recovery);
+  MatXc velocity(model.mass.rows(), Nf);
   r.iterations = iterate_drag_linearisation(s, random_factor * r.sigma_relative_velocity_m_s, r.drag_damping_N_s_m2, options, [&] {
-    for (Eigen::Index j = 0; j < Nf; ++j) {
-      const double w = omegas(j);
-      const VecXc force = morison_excitation(s, r.drag_damping_N_s_m2, w, U.col(j));
-      r.q_transfer.col(j) = solve_generalised(model, modes, w, force, r.drag_damping_N_s_m2, options.recovery);
-      r.relative_velocity_transfer.col(j) = U.col(j) - (1i * w) * (model.phi * r.q_transfer.col(j));
-    }
+    system.solve(r.drag_damping_N_s_m2, r.q_transfer);
+    for (Eigen::Index j = 0; j < Nf; ++j) velocity.col(j) = (1i * omegas(j)) * r.q_transfer.col(j);
+    r.relative_velocity_transfer = U - real_times(model.phi, velocity);
     r.sigma_relative_velocity_m_s = sigma_of(r.relative_velocity_transfer);
     return VecX(random_factor * r.sigma_relative_velocity_m_s);
   });
@@ -133,21 +212,28 @@ MatX displacement_spectrum(const Model& model, const RandomResponse& r) {
   return (model.phi * r.q_transfer).cwiseAbs2() * r.wave_spectrum_m2_s.asDiagonal();
 }
 
-RmsProfiles rms_profiles(const Model& model, const RandomResponse& r) {
+MatX inertia_relief_spectrum(const Model& model, const RandomResponse& r) {
+  MatX spectrum(model.strips.x_m.size(), r.omega_rad_s.size());
+  for (Eigen::Index j = 0; j < r.omega_rad_s.size(); ++j) {
+    const HarmonicResponse unit{r.omega_rad_s(j), 1.0, r.q_transfer.col(j), r.relative_velocity_transfer.col(j), {},
+                                r.drag_damping_N_s_m2, r.iterations};
+    const VecXc load = harmonic_load_per_length(model, unit);
+    spectrum.col(j) = inertia_relief_moment<std::complex<double>>(model, load, unit.q, harmonic_inertial_q(model, unit)).cwiseAbs2() *
+                      r.wave_spectrum_m2_s(j);
+  }
+  return spectrum;
+}
+
+RmsProfiles rms_profiles(const Model& model, const RandomResponse& r) { return rms_profiles(model, r, inertia_relief_spectrum(model, r)); }
+
+RmsProfiles rms_profiles(const Model& model, const RandomResponse& r, const MatX& relief_spectrum) {
   const VecX weight = r.wave_spectrum_m2_s * r.delta_omega_rad_s;
   const MatXc moment = model.strips.bending_stiffness_N_m2.asDiagonal() * (model.phi_curvature * r.q_transfer);
   RmsProfiles p;
   p.displacement_m = ((model.phi * r.q_transfer).cwiseAbs2() * weight).cwiseSqrt();
   p.bending_moment_N_m = (moment.cwiseAbs2() * weight).cwiseSqrt();
   p.stress_Pa = p.bending_moment_N_m.cwiseQuotient(model.strips.section_modulus_m3);
-  VecX variance = VecX::Zero(model.strips.x_m.size());
-  for (Eigen::Index j = 0; j < r.omega_rad_s.size(); ++j) {
-    const HarmonicResponse unit{r.omega_rad_s(j), 1.0, r.q_transfer.col(j), r.relative_velocity_transfer.col(j), {},
-                                r.drag_damping_N_s_m2, r.iterations};
-    const VecXc load = harmonic_load_per_length(model, unit);
-    variance += inertia_relief_moment<std::complex<double>>(model, load, unit.q).cwiseAbs2() * weight(j);
-  }
-  p.inertia_relief_moment_N_m = variance.cwiseSqrt();
+  p.inertia_relief_moment_N_m = ((relief_spectrum * r.delta_omega_rad_s).rowwise().sum()).cwiseSqrt();
   p.inertia_relief_stress_Pa = p.inertia_relief_moment_N_m.cwiseQuotient(model.strips.section_modulus_m3);
   return p;
 }

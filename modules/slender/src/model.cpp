@@ -44,6 +44,22 @@ VecX effective_tension(const BodyDescription& body, const Environment& env, cons
                        const VecX& submerged_fraction) {
   const auto n = static_cast<Eigen::Index>(body.strips.size());
   VecX tension(n);
+  if (body.top_support == Support::Clamped) {
+    // A hanging body: the free bottom carries nothing, every section the part below it.
+    double below = 0.0;
+    double x = 0.0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Strip& s = body.strips[static_cast<std::size_t>(i)];
+      const double area = pi * s.outer_diameter_m * s.outer_diameter_m / 4.0;
+      const double net_down = (structural_mass(i) - env.water_density_kg_m3 * area * submerged_fraction(i)) * env.gravity_m_s2;
+      tension(i) = below + 0.5 * net_down * s.length_m;
+      for (const PointMass& m : body.point_masses)
+        if (m.x_m < x + 0.5 * s.length_m) tension(i) += m.mass_kg * env.gravity_m_s2;
+      below += net_down * s.length_m;
+      x += s.length_m;
+    }
+    return tension;
+  }
   double above = body.top_tension_N;  // T_eff at the top of the current strip
   for (Eigen::Index i = n - 1; i >= 0; --i) {
     const Strip& s = body.strips[static_cast<std::size_t>(i)];
@@ -53,17 +69,32 @@ VecX effective_tension(const BodyDescription& body, const Environment& env, cons
     tension(i) = above + 0.5 * net_up * s.length_m;
     above += net_up * s.length_m;
   }
+  // A point mass's weight hangs on every section below it.
+  Eigen::Index i = 0;
+  double x = 0.0;
+  for (const Strip& s : body.strips) {
+    const double midpoint = x + 0.5 * s.length_m;
+    for (const PointMass& m : body.point_masses)
+      if (m.x_m > midpoint) tension(i) -= m.mass_kg * env.gravity_m_s2;
+    x += s.length_m;
+    ++i;
+  }
   return tension;
 }
 
 Model make_model(const BodyDescription& body, const Environment& env) {
   if (body.strips.empty()) fail("strips", "give at least one strip", "no strips");
   if (body.shapes.empty()) fail("shapes", "give at least one shape function", "no shape functions");
-  if (body.top_support == Support::Clamped)
-    fail("top_support", "put the clamped end at the bottom (x = 0)", "a clamped top end is not supported");
+  if (body.top_support == Support::Clamped && (body.bottom_support != Support::Free ||
+                                                body.bottom_springs.translational_N_m != 0.0 || body.bottom_springs.rotational_N_m_rad != 0.0))
+    fail("top_support", "a clamped top takes a free bottom end without springs (a hanging body), or clamp the bottom instead",
+         "a clamped top above a supported bottom: the inertia-relief moment needs a reaction statics does not give");
+  if (body.top_support == Support::Clamped && body.top_tension_N != 0.0)
+    fail("top_tension_N", "leave it 0: a hanging body's tension is the weight below each section",
+         "a clamped top with a top tension of " + std::to_string(body.top_tension_N) + " N");
   const auto N = static_cast<Eigen::Index>(body.strips.size());
   const auto n = static_cast<Eigen::Index>(body.shapes.size());
-  Model model{body, env, 0.0, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+  Model model{body, env, 0.0, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   StripTable& t = model.strips;
   for (VecX* v : {&t.x_m, &t.dx_m, &t.diameter_m, &t.section_modulus_m3, &t.bending_stiffness_N_m2,
                   &t.structural_mass_kg_m, &t.mass_kg_m, &t.submerged_fraction, &t.x_kinematics_m,
@@ -112,6 +143,33 @@ Model make_model(const BodyDescription& body, const Environment& env) {
     model.phi_bottom(m) = foot.value;
     model.phi_bottom_slope(m) = foot.slope;
   }
+  // Point springs and masses: the shapes sampled where they sit.
+  const auto sample = [&](double x, const char* what, MatX& value, MatX& slope, Eigen::Index row) {
+    if (!(x >= 0.0 && x <= model.length_m))
+      fail(what, "place it on the body, 0 <= x <= L", std::string(what) + " at x = " + std::to_string(x) + " m, off the body (L = " +
+                                                          std::to_string(model.length_m) + " m)");
+    for (Eigen::Index m = 0; m < n; ++m) {
+      const ShapeValue v = evaluate(body.shapes[static_cast<std::size_t>(m)], x);
+      value(row, m) = v.value;
+      slope(row, m) = v.slope;
+    }
+  };
+  const auto springs = static_cast<Eigen::Index>(body.point_springs.size()), masses = static_cast<Eigen::Index>(body.point_masses.size());
+  model.phi_springs.resize(springs, n);
+  model.phi_springs_slope.resize(springs, n);
+  model.phi_masses.resize(masses, n);
+  model.phi_masses_slope.resize(masses, n);
+  for (Eigen::Index p = 0; p < springs; ++p) {
+    const PointSpring& k = body.point_springs[static_cast<std::size_t>(p)];
+    if (!(k.translational_N_m >= 0.0) || !(k.rotational_N_m_rad >= 0.0)) fail("point spring", "stiffnesses >= 0", "a negative point spring");
+    sample(k.x_m, "point spring", model.phi_springs, model.phi_springs_slope, p);
+  }
+  for (Eigen::Index p = 0; p < masses; ++p) {
+    const PointMass& m = body.point_masses[static_cast<std::size_t>(p)];
+    if (!(m.mass_kg >= 0.0) || !(m.rotary_inertia_kg_m2 >= 0.0)) fail("point mass", "mass and inertia >= 0", "a negative point mass");
+    sample(m.x_m, "point mass", model.phi_masses, model.phi_masses_slope, p);
+  }
+
   check_support(body.bottom_support, model.phi_bottom, model.phi_bottom_slope, model.length_m, "bottom");
   check_support(body.top_support, model.phi_top, model.phi_top_slope, model.length_m, "top");
 
@@ -127,6 +185,17 @@ Model make_model(const BodyDescription& body, const Environment& env) {
                      body.bottom_springs.rotational_N_m_rad * model.phi_bottom_slope * model.phi_bottom_slope.transpose() +
                      body.top_springs.translational_N_m * model.phi_top * model.phi_top.transpose() +
                      body.top_springs.rotational_N_m_rad * model.phi_top_slope * model.phi_top_slope.transpose();
+  // Their energies: ½k v(x_p)² + ½k_θ v'(x_p)², ½m v̇(x_p)² + ½J v̇'(x_p)².
+  for (Eigen::Index p = 0; p < springs; ++p) {
+    const PointSpring& k = body.point_springs[static_cast<std::size_t>(p)];
+    model.stiffness += k.translational_N_m * model.phi_springs.row(p).transpose() * model.phi_springs.row(p) +
+                       k.rotational_N_m_rad * model.phi_springs_slope.row(p).transpose() * model.phi_springs_slope.row(p);
+  }
+  for (Eigen::Index p = 0; p < masses; ++p) {
+    const PointMass& m = body.point_masses[static_cast<std::size_t>(p)];
+    model.mass += m.mass_kg * model.phi_masses.row(p).transpose() * model.phi_masses.row(p) +
+                  m.rotary_inertia_kg_m2 * model.phi_masses_slope.row(p).transpose() * model.phi_masses_slope.row(p);
+  }
   model.structural_damping = body.rayleigh_mass_per_s * model.mass + body.rayleigh_stiffness_s * model.stiffness;
   return model;
 }

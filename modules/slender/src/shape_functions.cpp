@@ -37,6 +37,10 @@ ShapeValue evaluate(const ShapeFunction& shape, double x) {
   switch (shape.kind) {
     case ShapeKind::ClampedFreeMode:
       return clamped_free(shape.parameter, shape.length_m, x);
+    case ShapeKind::FreeClampedMode: {  // x → L − x: the slope changes sign, the curvature does not
+      const ShapeValue v = clamped_free(shape.parameter, shape.length_m, shape.length_m - x);
+      return {v.value, -v.slope, v.curvature};
+    }
     case ShapeKind::Sine: {
       const double k = shape.parameter / shape.length_m;
       return {std::sin(k * x), k * std::cos(k * x), -k * k * std::sin(k * x)};
@@ -61,6 +65,12 @@ std::vector<ShapeFunction> clamped_free_shapes(int count, double length) {
   std::vector<ShapeFunction> shapes;
   for (int n = 1; n <= count; ++n)
     shapes.push_back({ShapeKind::ClampedFreeMode, n, length, clamped_free_beta(n)});
+  return shapes;
+}
+
+std::vector<ShapeFunction> free_clamped_shapes(int count, double length) {
+  std::vector<ShapeFunction> shapes = clamped_free_shapes(count, length);
+  for (ShapeFunction& s : shapes) s.kind = ShapeKind::FreeClampedMode;
   return shapes;
 }
 

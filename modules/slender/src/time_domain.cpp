@@ -83,7 +83,8 @@ TimeDomainResult simulate(const Model& model, const Modes& modes, const WaveHist
     r.q.col(column) = q;
     r.displacement_m.col(column) = model.phi * q;
     r.moment_elastic_N_m.col(column) = elastic_moment<double>(model, q);
-    r.moment_inertia_relief_N_m.col(column) = inertia_relief_moment<double>(model, load, q);
+    const VecX inertial = Psi * (a_ddot + model.body.rayleigh_mass_per_s * a_dot);  // q̈ + α q̇ for the point masses
+    r.moment_inertia_relief_N_m.col(column) = inertia_relief_moment<double>(model, load, q, inertial);
   };
 
   VecX y = VecX::Zero(2 * z);

@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -94,7 +95,7 @@ TEST_CASE("bending moment by EI v'' against inertia relief, FD with linearised d
     const Model model = cantilever(shapes, 1.0, 0.0, strips);
     const HarmonicResponse r = solve_harmonic(model, compute_modes(model), omega, amplitude, velocity_transfer(model, omega));
     const VecXc elastic = elastic_moment<std::complex<double>>(model, r.q);
-    const VecXc relief = inertia_relief_moment<std::complex<double>>(model, harmonic_load_per_length(model, r), r.q);
+    const VecXc relief = inertia_relief_moment<std::complex<double>>(model, harmonic_load_per_length(model, r), r.q, harmonic_inertial_q(model, r));
     const double difference = (elastic - relief).cwiseAbs().maxCoeff() / elastic.cwiseAbs().maxCoeff();
     INFO(shapes << " shapes, " << strips << " strips: max |EI v'' − IR| / max |M| = " << difference);
     // Largest at the clamped base. Measured 2.2e-3, 5.7e-4, 1.5e-4 for (4, 100), (8, 400),
@@ -130,11 +131,20 @@ TEST_CASE("performance: one FD case of the cantilever (printed, not asserted)", 
     spectrum(j) = pierson_moskowitz(omegas(j), 4.0, 10.0);
   }
   const MatXc U = velocity_transfer_table(model, omegas);
-  const auto start = std::chrono::steady_clock::now();
-  const RandomResponse r = solve_random(model, modes, omegas, spectrum, 0.02, U);
-  const RmsProfiles p = rms_profiles(model, r);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  std::cout << "slender FD, 100 strips, 8 shapes, 4 modes, 100 frequencies, " << r.iterations
-            << " drag iterations: " << ms << " ms (base σ_stress " << p.stress_Pa(0) / 1e6 << " MPa)\n";
+  // Best of five: the machine is shared, the least disturbed run is the cost.
+  double solve_ms = INFINITY, profiles_ms = INFINITY;
+  RandomResponse r;
+  RmsProfiles p;
+  for (int k = 0; k < 5; ++k) {
+    const auto start = std::chrono::steady_clock::now();
+    r = solve_random(model, modes, omegas, spectrum, 0.02, U);
+    const auto solved = std::chrono::steady_clock::now();
+    p = rms_profiles(model, r);
+    const auto end = std::chrono::steady_clock::now();
+    solve_ms = std::min(solve_ms, std::chrono::duration<double, std::milli>(solved - start).count());
+    profiles_ms = std::min(profiles_ms, std::chrono::duration<double, std::milli>(end - solved).count());
+  }
+  std::cout << "slender FD, 100 strips, 8 shapes, 4 modes, 100 frequencies, " << r.iterations << " drag iterations: solve "
+            << solve_ms << " ms, rms profiles " << profiles_ms << " ms (best of 5; base σ_stress " << p.stress_Pa(0) / 1e6 << " MPa)\n";
   CHECK(p.stress_Pa.allFinite());
 }

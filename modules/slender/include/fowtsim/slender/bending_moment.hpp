@@ -21,6 +21,7 @@
 #include "fowtsim/slender/model.hpp"
 
 #include <complex>
+#include <vector>
 
 namespace fowtsim::slender {
 
@@ -35,31 +36,77 @@ ColumnOf<Scalar> elastic_moment(const Model& model, const ColumnOf<Scalar>& q) {
 }
 
 // Inertia-relief moment at the strip midpoints (N), from the load per length p (N) [N/m]
-// (wave force − inertia − external damping) and the generalised displacements q (n).
+// (wave force − inertia − external damping), the generalised displacements q (n) and r = q̈ + α q̇
+// (n), the generalised inertia the point masses' d'Alembert forces −m_p φ(x_p)·r and moments
+// −J_p φ'(x_p)·r act with (α: mass-proportional damping). Point springs act with −k v(x_p) and
+// −k_θ v'(x_p). A point above x has arm x_p − x.
+//
+// A clamped top (a hanging body, free bottom) has an unknown reaction force and moment at the top:
+// the sum then runs from the bottom end instead, whose natural conditions are known,
+//   M(x) = ∫_0^x (x − s) p ds + ∫_0^x T v' ds + x F_bottom + k_θ v'(0) + Σ_{x_p < x} [(x − x_p) F_p − C_p],
+// the mirror image of the top form (x → L − x turns v' and a point moment's sense).
 template <class Scalar>
-ColumnOf<Scalar> inertia_relief_moment(const Model& model, const ColumnOf<Scalar>& load_N_m, const ColumnOf<Scalar>& q) {
+ColumnOf<Scalar> inertia_relief_moment(const Model& model, const ColumnOf<Scalar>& load_N_m, const ColumnOf<Scalar>& q,
+                                       const ColumnOf<Scalar>& inertial_q) {
   const StripTable& s = model.strips;
   const auto N = s.x_m.size();
   const ColumnOf<Scalar> slope = model.phi_slope.template cast<Scalar>() * q;
+  // Point forces F_p and moments C_p: springs then masses.
+  std::vector<double> point_x;
+  std::vector<Scalar> point_force, point_moment;
+  for (std::size_t p = 0; p < model.body.point_springs.size(); ++p) {
+    const PointSpring& k = model.body.point_springs[p];
+    const auto row = static_cast<Eigen::Index>(p);
+    point_x.push_back(k.x_m);
+    point_force.push_back(-k.translational_N_m * (model.phi_springs.row(row).template cast<Scalar>() * q)(0));
+    point_moment.push_back(-k.rotational_N_m_rad * (model.phi_springs_slope.row(row).template cast<Scalar>() * q)(0));
+  }
+  for (std::size_t p = 0; p < model.body.point_masses.size(); ++p) {
+    const PointMass& m = model.body.point_masses[p];
+    const auto row = static_cast<Eigen::Index>(p);
+    point_x.push_back(m.x_m);
+    point_force.push_back(-m.mass_kg * (model.phi_masses.row(row).template cast<Scalar>() * inertial_q)(0));
+    point_moment.push_back(-m.rotary_inertia_kg_m2 * (model.phi_masses_slope.row(row).template cast<Scalar>() * inertial_q)(0));
+  }
+  ColumnOf<Scalar> moment(N);
+
+  if (model.body.top_support == Support::Clamped) {  // from the free bottom (make_model: no bottom springs)
+    Scalar first_moment = Scalar(0), resultant = Scalar(0), tension_term = Scalar(0);  // Σ x_i p_i Δx, Σ p_i Δx, Σ T v' Δx below
+    for (Eigen::Index j = 0; j < N; ++j) {
+      const double dx = s.dx_m(j), x = s.x_m(j);
+      moment(j) = x * resultant - first_moment + tension_term + load_N_m(j) * (dx * dx / 8.0) +
+                  s.effective_tension_N(j) * slope(j) * (dx / 2.0);
+      for (std::size_t p = 0; p < point_x.size(); ++p)
+        if (point_x[p] < x) moment(j) += (x - point_x[p]) * point_force[p] - point_moment[p];
+      first_moment += x * load_N_m(j) * dx;
+      resultant += load_N_m(j) * dx;
+      tension_term += s.effective_tension_N(j) * slope(j) * dx;
+    }
+    return moment;
+  }
+
   const Scalar v_top = model.phi_top.template cast<Scalar>().dot(q);
   const Scalar slope_top = model.phi_top_slope.template cast<Scalar>().dot(q);
   const EndSprings& springs = model.body.top_springs;
   const Scalar top_moment = -springs.rotational_N_m_rad * slope_top;
   Scalar top_force = -springs.translational_N_m * v_top;
   // Σ over whole strips above x_j, by suffix sums: Σ x_i p_i Δx, Σ p_i Δx and Σ T_i v'_i Δx.
-  ColumnOf<Scalar> moment(N);
   Scalar first_moment = Scalar(0), resultant = Scalar(0), tension_term = Scalar(0);
   for (Eigen::Index j = N - 1; j >= 0; --j) {
     const double dx = s.dx_m(j), x = s.x_m(j);
     moment(j) = first_moment - x * resultant - tension_term + load_N_m(j) * (dx * dx / 8.0) -
                 s.effective_tension_N(j) * slope(j) * (dx / 2.0);
+    for (std::size_t p = 0; p < point_x.size(); ++p)
+      if (point_x[p] > x) moment(j) += (point_x[p] - x) * point_force[p] + point_moment[p];
     first_moment += x * load_N_m(j) * dx;
     resultant += load_N_m(j) * dx;
     tension_term += s.effective_tension_N(j) * slope(j) * dx;
   }
   if (model.body.top_support == Support::Pinned) {
-    // M(0) = first_moment − tension_term + L (F_top + R) + top_moment = 0.
-    top_force = -(first_moment - tension_term + top_moment) / model.length_m;
+    // M(0) = first_moment − tension_term + Σ_p (x_p F_p + C_p) + L (F_top + R) + top_moment = 0.
+    Scalar points = Scalar(0);
+    for (std::size_t p = 0; p < point_x.size(); ++p) points += point_x[p] * point_force[p] + point_moment[p];
+    top_force = -(first_moment - tension_term + points + top_moment) / model.length_m;
   }
   for (Eigen::Index j = 0; j < N; ++j) moment(j) += (model.length_m - s.x_m(j)) * top_force + top_moment;
   return moment;

@@ -45,6 +45,8 @@ HarmonicResponse solve_harmonic(const Model& model, const Modes& modes, double o
 // linearised drag on the relative velocity, minus the inertia (structural + added mass) and the
 // mass-proportional damping, p = a(ρCmA iωU) + c u_r + ω² m v − iω α m v.
 VecXc harmonic_load_per_length(const Model& model, const HarmonicResponse& response);
+// r = q̈ + α q̇ = (−ω² + iωα) q: the generalised inertia of the point masses' d'Alembert forces (n).
+VecXc harmonic_inertial_q(const Model& model, const HarmonicResponse& response);
 
 struct RandomResponse {
   VecX omega_rad_s;              // ω_j (Nf), equally spaced by delta_omega
@@ -76,8 +78,12 @@ struct RmsProfiles {
 // The inertia-relief moment's H(ω_j) is inertia_relief_moment on the load per unit wave amplitude
 // (harmonic_load_per_length of the response at ω_j with the converged linear drag).
 RmsProfiles rms_profiles(const Model& model, const RandomResponse& response);
+// The same with the inertia-relief moment's spectrum already at hand (inertia_relief_spectrum).
+RmsProfiles rms_profiles(const Model& model, const RandomResponse& response, const MatX& inertia_relief_spectrum);
 
 // Response spectrum of the displacement, S_v(x_i, ω_j) = |V_i(ω_j)|² S_η(ω_j) (N × Nf) [m²·s/rad].
 MatX displacement_spectrum(const Model& model, const RandomResponse& response);
+// Response spectrum of the inertia-relief moment, |M_IR(x_i, ω_j)|² S_η(ω_j) (N × Nf) [N²·m²·s/rad].
+MatX inertia_relief_spectrum(const Model& model, const RandomResponse& response);
 
 }  // namespace fowtsim::slender

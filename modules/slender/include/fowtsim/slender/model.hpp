@@ -29,6 +29,20 @@ struct EndSprings {
   double rotational_N_m_rad = 0.0;     // k on v' at the end [N·m/rad]
 };
 
+// A spring attached at one point along the body (a fairlead's mooring stiffness, a guide).
+struct PointSpring {
+  double x_m = 0.0;                    // where, from the bottom end [m], 0 <= x <= L
+  double translational_N_m = 0.0;      // k on v(x) [N/m]
+  double rotational_N_m_rad = 0.0;     // k_θ on v'(x) [N·m/rad]
+};
+
+// A lumped mass at one point (the RNA on a tower, a buoy, a joint): translation and rotary inertia.
+struct PointMass {
+  double x_m = 0.0;                    // where, from the bottom end [m], 0 <= x <= L
+  double mass_kg = 0.0;                // on v̈(x) [kg]
+  double rotary_inertia_kg_m2 = 0.0;   // on v̈'(x), about the axis normal to the bending plane [kg·m²]
+};
+
 struct Environment {
   double water_density_kg_m3 = 1025.0;
   double gravity_m_s2 = 9.81;
@@ -42,6 +56,8 @@ struct BodyDescription {
   Support top_support = Support::Free;
   EndSprings bottom_springs;
   EndSprings top_springs;
+  std::vector<PointSpring> point_springs;  // along the body (springs at the ends may also be given here)
+  std::vector<PointMass> point_masses;
   double top_tension_N = 0.0;          // effective tension at x = L [N] (tensioner; 0 for a free top)
   double rayleigh_mass_per_s = 0.0;    // α of C = αM + βK [1/s]
   double rayleigh_stiffness_s = 0.0;   // β of C = αM + βK [s]
@@ -74,17 +90,22 @@ struct Model {
   MatX phi_curvature;          // Φ'' (N × n) [1/m²]
   VecX phi_top, phi_top_slope; // φ_m(L), φ_m'(L) (n): end springs, inertia relief
   VecX phi_bottom, phi_bottom_slope; // φ_m(0), φ_m'(0) (n)
-  MatX mass;                   // M = Φᵀ diag(m Δx) Φ (n × n) [kg]
-  MatX stiffness;              // K = Φ''ᵀ diag(EI Δx) Φ'' + Φ'ᵀ diag(T_eff Δx) Φ' + end springs [N/m]
+  MatX phi_springs, phi_springs_slope; // φ_m, φ_m' at the point springs (springs × n)
+  MatX phi_masses, phi_masses_slope;   // φ_m, φ_m' at the point masses (masses × n)
+  MatX mass;                   // M = Φᵀ diag(m Δx) Φ + point masses (n × n) [kg]
+  MatX stiffness;              // K = Φ''ᵀ diag(EI Δx) Φ'' + Φ'ᵀ diag(T_eff Δx) Φ' + end and point springs [N/m]
   MatX structural_damping;     // C = αM + βK (n × n) [N·s/m]
 };
 
 // Builds the model; throws InputError on bad strips, on shapes that break an essential condition,
-// and on a clamped top (the inertia-relief moment sums from the top end and cannot take one).
+// on points off the body, and on a clamped top above a supported bottom (the inertia-relief
+// moment then sums from the free bottom end; with supports at both ends and a clamped one it
+// would need a reaction that statics does not give).
 Model make_model(const BodyDescription& body, const Environment& environment);
 
 // T_eff(x) at the strip midpoints: T_top + ∫_x^L (buoyancy − weight) per length (equilibrium of
-// the part above x). The seed's slide "Development Strategy" writes T_eff = (ρ_f − ρ_s) g A x for a
+// the part above x; a point mass's weight on the sections below it). A clamped top (a hanging
+// body, free bottom): ∫_0^x (weight − buoyancy), the part below x, point masses below included. The seed's slide "Development Strategy" writes T_eff = (ρ_f − ρ_s) g A x for a
 // uniform body with a free bottom; this is the same balance for any strips and a top tension.
 VecX effective_tension(const BodyDescription& body, const Environment& environment,
                        const VecX& structural_mass_kg_m, const VecX& submerged_fraction);

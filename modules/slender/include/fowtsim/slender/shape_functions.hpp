@@ -9,6 +9,7 @@ namespace fowtsim::slender {
 
 enum class ShapeKind {
   ClampedFreeMode,   // mode of the uniform cantilever clamped at x = 0, free at x = L
+  FreeClampedMode,   // the same mirrored: clamped at the top x = L, free at the bottom x = 0 (a hanging body)
   Sine,              // sin(nπx/L): zero displacement and curvature at both ends (pinned–pinned)
   RigidTranslation,  // φ = 1: the whole body sways
   RigidRotation,     // φ = x − x_ref: the body rotates about x_ref (small angle)
@@ -18,7 +19,7 @@ struct ShapeFunction {
   ShapeKind kind;   // family
   int index;        // mode number n >= 1 (ClampedFreeMode, Sine); 0 for rigid shapes
   double length_m;  // L, the body's length [m]
-  double parameter; // β_n [-] for ClampedFreeMode, nπ [-] for Sine, x_ref [m] for RigidRotation
+  double parameter; // β_n [-] for ClampedFreeMode and FreeClampedMode, nπ [-] for Sine, x_ref [m] for RigidRotation
 };
 
 struct ShapeValue {
@@ -36,6 +37,8 @@ double clamped_free_beta(int n);
 // The first `count` modes of a uniform clamped–free beam, scaled to φ(L) = ±2 (the textbook
 // form cosh − cos − σ(sinh − sin)), evaluated without cancellation.
 std::vector<ShapeFunction> clamped_free_shapes(int count, double length_m);
+// The same mirrored, φ(x) = φ_cf(L − x): clamped at the top (a deck connection), free at the bottom.
+std::vector<ShapeFunction> free_clamped_shapes(int count, double length_m);
 // sin(nπx/L), n = 1 … count: pinned–pinned bodies (a top-tensioned riser).
 std::vector<ShapeFunction> pinned_pinned_shapes(int count, double length_m);
 // A floating body: translation, rotation about x_ref, then `flexible_count` sines. The sines vanish
