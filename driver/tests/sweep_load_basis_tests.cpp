@@ -170,8 +170,9 @@ TEST_CASE("load basis: the ultimate table applies γ_f to the characteristic val
   CHECK(max.concurrent == std::vector<double>{27.0, 6.0});
   // TwrBsMyt min: normal 1.35 × mean(−5 … −10) = −10.125 against abnormal 1.1 × −13.5 = −14.85.
   CHECK(loads[1].design_value == Approx(-14.85).epsilon(1e-15));
-  // PtfmPitch max: abnormal 1.1 × 0.6 = 0.66 governs over normal 1.35 × mean(0 … 0.5) = 0.3375.
-  CHECK(loads[2].design_value == Approx(0.66).epsilon(1e-15));
+  // PtfmPitch, an angle (deg): no γ_f. Max: abnormal 0.6 governs over normal mean(0 … 0.5) = 0.25.
+  CHECK(loads[2].partial_safety_factor == 1.0);
+  CHECK(loads[2].design_value == Approx(0.6).epsilon(1e-15));
 
   SECTION("six realisations: F_k is their mean, the governing realisation holds the largest") {
     h.spec.groups[1].ultimate = false;

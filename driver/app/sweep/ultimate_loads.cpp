@@ -29,6 +29,15 @@ std::vector<LoadCase> ultimate_load_cases(const LoadTable& table, const SweepSpe
   return cases;
 }
 
+// γ_f is a partial safety factor for loads: forces and moments. A motion, an angle, a speed or a
+// power keeps its characteristic value (γ_f = 1) — 1.35 × 90° of pitch means nothing.
+bool is_load_unit(const std::string& unit) {
+  static const char* const kLoadUnits[] = {"N", "kN", "MN", "N-m", "kN-m", "MN-m", "N·m", "kN·m", "MN·m", "Nm", "kNm"};
+  for (const char* u : kLoadUnits)
+    if (unit == u) return true;
+  return false;
+}
+
 }  // namespace
 
 std::vector<UltimateLoad> ultimate_loads(const LoadTable& table, const SweepSpec& spec) {
@@ -60,7 +69,7 @@ std::vector<UltimateLoad> ultimate_loads(const LoadTable& table, const SweepSpec
         u.realisations = n;
         u.mean_of_realisations = n >= kRealisationsForMean;
         u.characteristic_value = u.mean_of_realisations ? sum / static_cast<double>(n) : extreme->value;
-        u.partial_safety_factor = lc.group->partial_safety_factor;
+        u.partial_safety_factor = is_load_unit(table.units[k]) ? lc.group->partial_safety_factor : 1.0;
         u.design_value = u.partial_safety_factor * u.characteristic_value;
         u.governing = extreme_row;
         u.time_s = extreme->time_s;

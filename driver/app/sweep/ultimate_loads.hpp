@@ -7,7 +7,8 @@
 // completed realisations (the turbulent presets' kPresetSeeds) the mean of their extremes, as
 // IEC 61400-1 allows for turbulent load cases; with fewer, the largest extreme. γ_f is the
 // group's partial safety factor for loads (its preset's: N 1.35, A 1.1; IEC 61400-1 ed. 4
-// Table 3). Only groups whose analysis includes U enter. The governing load case is the one with
+// Table 3), on channels in force or moment units only (a motion or an angle keeps γ_f = 1).
+// Only groups whose analysis includes U enter. The governing load case is the one with
 // the largest |γ_f F_k| in the sense; within it the realisation with the extreme itself.
 #include <cstddef>
 #include <string>
