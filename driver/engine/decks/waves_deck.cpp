@@ -17,6 +17,7 @@
 #include "decks/deck_helpers.hpp"
 #include "decks/deck_section.hpp"
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/text_fields.hpp"
 #include "fowtsim/io/readers.hpp"
 
 namespace fowtsim::driver {
@@ -58,21 +59,6 @@ void for_each_line(std::string_view text, Visit&& visit) {
   }
 }
 
-bool blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == ','; }
-
-std::vector<std::string_view> tokens(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && blank(line[i])) ++i;
-    std::size_t j = i;
-    while (j < line.size() && !blank(line[j])) ++j;
-    if (j > i) out.push_back(line.substr(i, j - i));
-    i = j;
-  }
-  return out;
-}
-
 // Two columns, time [s] and elevation [m], separated by blanks or a comma; '#' starts a comment;
 // blank lines are skipped. "nan"/"inf" are read as such so that the waves module's check names them.
 waves::ElevationRecord read_two_columns(const std::filesystem::path& path) {
@@ -84,7 +70,7 @@ waves::ElevationRecord read_two_columns(const std::filesystem::path& path) {
       text.empty() || text.back() == '\n' ? 0 : static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
   for_each_line(text, [&](std::string_view line, std::size_t number) {
     line = line.substr(0, line.find('#'));
-    const std::vector<std::string_view> fields = tokens(line);
+    const std::vector<std::string_view> fields = split_fields(line);
     if (fields.empty()) return true;
     if (number == unterminated_line)
       bad_record(fmt::format("{}:{}", r.source, number),
@@ -117,7 +103,7 @@ std::vector<std::size_t> openfast_row_lines(const std::filesystem::path& path) {
   std::vector<std::size_t> lines;
   bool after_names = false, in_data = false;
   for_each_line(text, [&](std::string_view line, std::size_t number) {
-    const std::vector<std::string_view> fields = tokens(line);
+    const std::vector<std::string_view> fields = split_fields(line);
     if (in_data) {
       if (!fields.empty()) lines.push_back(number);
       return true;

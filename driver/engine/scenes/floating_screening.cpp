@@ -282,6 +282,15 @@ std::vector<std::string> screening_channels(bool with_rotor) {
   return c;
 }
 
+std::vector<std::string> time_domain_settings(const ScreeningOperatingPoint& op, double t_max_s) {
+  return {fmt::format("structure.initial_conditions.rotor_speed_rpm={}", op.rotor_speed_rpm),
+          fmt::format("structure.initial_conditions.blade_pitch_deg={}", op.pitch_deg),
+          fmt::format("structure.initial_conditions.platform_position_m=[{}, 0, {}]", op.platform[0], op.platform[2]),
+          fmt::format("structure.initial_conditions.platform_angles_deg=[0, {}, 0]", op.platform[4]),
+          fmt::format("simulation.t_max_s={}", t_max_s),
+          std::string("output={format: out, decimation: 4, channels: [PtfmHeave, PtfmPitch, TwrBsMyt]}")};
+}
+
 ScreeningResult screen_floating(const std::filesystem::path& deck_path, const std::vector<std::string>& settings,
                                 const ScreeningOptions& options) {
   ScreeningResult result;

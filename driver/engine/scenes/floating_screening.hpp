@@ -46,6 +46,11 @@ struct ScreeningOperatingPoint {
   int newton_iterations = 0;
 };
 
+// `--set` settings that start a time-domain run of the same deck at this operating point (rotor speed,
+// pitch, surge, heave and pitch of the platform) for `t_max_s`, writing PtfmHeave, PtfmPitch and
+// TwrBsMyt: the FD/TD comparisons of the tests and of `fowtsim verify screening`.
+std::vector<std::string> time_domain_settings(const ScreeningOperatingPoint& op, double t_max_s);
+
 struct ScreeningMode {
   double frequency_hz = 0.0;   // undamped natural frequency |λ|/2π of the coupled closed-loop model
   double damping_ratio = 0.0;  // −Re λ/|λ|, radiation and drag damping at the mode's own frequency

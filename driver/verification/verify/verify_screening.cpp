@@ -119,13 +119,7 @@ void fd_against_td(std::FILE* out, std::vector<VerificationRow>& rows) {
   request.output_base = dir / "td";
   request.output_format = "out";
   request.deck_settings = sea;
-  for (const std::string& s :
-       {fmt::format("structure.initial_conditions.rotor_speed_rpm={}", op.rotor_speed_rpm),
-        fmt::format("structure.initial_conditions.blade_pitch_deg={}", op.pitch_deg),
-        fmt::format("structure.initial_conditions.platform_position_m=[{}, 0, {}]", op.platform[0], op.platform[2]),
-        fmt::format("structure.initial_conditions.platform_angles_deg=[0, {}, 0]", op.platform[4]), std::string("simulation.t_max_s=600"),
-        std::string("output={format: out, decimation: 4, channels: [PtfmHeave, PtfmPitch, TwrBsMyt]}")})
-    request.deck_settings.push_back(s);
+  for (const std::string& s : time_domain_settings(op, 600.0)) request.deck_settings.push_back(s);
   run_scene(request, nullptr);
   const io::ChannelTable t = io::read_channels(dir / "td.out");
   const struct {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/core/text_fields.hpp"
 
 namespace fowtsim::wind {
 namespace {
@@ -19,21 +20,6 @@ constexpr const char* kLayout =
 
 [[noreturn]] void bad(const std::string& where, const std::string& message) {
   throw InputError({"wind", std::nullopt, "wind.file", kLayout}, where + ": " + message);
-}
-
-bool blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == ','; }
-
-std::vector<std::string_view> tokens(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && blank(line[i])) ++i;
-    std::size_t j = i;
-    while (j < line.size() && !blank(line[j])) ++j;
-    if (j > i) out.push_back(line.substr(i, j - i));
-    i = j;
-  }
-  return out;
 }
 
 bool comment(std::string_view line) {
@@ -76,7 +62,7 @@ UniformWindHistory parse_uniform_wind(std::string_view text, const std::string& 
     ++number_of_line;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (comment(line)) continue;
-    const std::vector<std::string_view> fields = tokens(line);
+    const std::vector<std::string_view> fields = split_fields(line);
     if (fields.empty()) continue;
     const std::string where = source + ":" + std::to_string(number_of_line);
     if (columns == 0) {
