@@ -52,7 +52,7 @@ struct SeaStateSpec {
 
 struct LoadCaseGroup {
   std::string name;                          // case-name prefix, e.g. "dlc12"
-  std::string preset;                        // "dlc1.1", "dlc1.2", "dlc1.6", "dlc6.1" or "" (none)
+  std::string preset;                        // "dlc1.1" … "dlc7.1" (iec_presets.hpp) or "" (none)
   std::vector<double> wind_speeds_m_s;       // hub-height mean speeds; empty = the base deck's
   int seeds = 1;                             // stochastic realisations per factor combination
   SeaStateSpec sea_state;                    // waves per case
@@ -60,7 +60,7 @@ struct LoadCaseGroup {
   std::vector<double> wave_heading_deg;      // wave propagation direction; empty = the base deck's
   std::vector<KeyFactor> set;                // other deck keys
   Combination combine = Combination::cross;  // how the factors above combine
-  bool fatigue = false;                      // enters the lifetime DEL (DLC 1.2 by default)
+  bool fatigue = false;                      // enters the lifetime DEL (default: the preset's analysis F)
   bool ultimate = true;                      // enters the ultimate-load table (the preset's analysis U; else true)
   double partial_safety_factor = 1.35;       // γ_f of its ultimate loads (the preset's; else N, 1.35)
   double fatigue_time_fraction = 1.0;        // share of the design life this group's conditions hold (time-weighted fatigue)
