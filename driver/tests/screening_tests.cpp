@@ -16,6 +16,7 @@
 #include <catch2/catch.hpp>
 
 #include "cli/screen_command.hpp"
+#include "fowtsim/post/statistics.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "fowtsim/testing/skip.hpp"
@@ -49,19 +50,13 @@ std::size_t channel(const ScreeningResult& r, const std::string& name) {
   return static_cast<std::size_t>(it - r.outputs.begin());
 }
 
-// Population standard deviation of a channel over t ≥ from.
+// Population standard deviation of a channel over t ≥ from (fowtsim/post's statistics).
 double std_after(const io::ChannelTable& t, const std::string& name, double from) {
   const auto c = t.find(name);
   REQUIRE(c);
-  const std::vector<double>& time = t.time();
-  const std::vector<double>& x = t.columns[*c];
-  std::vector<double> kept;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (time[i] >= from - 1e-9) kept.push_back(x[i]);
-  const double mean = std::accumulate(kept.begin(), kept.end(), 0.0) / static_cast<double>(kept.size());
-  double sum = 0.0;
-  for (const double v : kept) sum += (v - mean) * (v - mean);
-  return std::sqrt(sum / static_cast<double>(kept.size()));
+  const post::RowRange rows = post::rows_in_window(t.time(), post::TimeWindow{from, t.time().back()});
+  const std::span<const double> time(t.time().data() + rows.first, rows.size()), x(t.columns[*c].data() + rows.first, rows.size());
+  return post::channel_statistics(time, x).std;
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "decks/waves_deck.hpp"
 #include "decks/wind_deck.hpp"
 #include "fowtsim/core/error.hpp"
+#include "fowtsim/multibody/coordinates.hpp"
 #include "fowtsim/multibody/multibody.hpp"
 #include "run/channel_selection.hpp"
 #include "scenes/record_length_warnings.hpp"
@@ -321,27 +322,16 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
     for (int i = 0; i < n; ++i) a[i] = evaluation_.acceleration[dofs[static_cast<std::size_t>(i)]];
     return a;
   };
-  // Coordinate k displaced by h: translations in g, rotations about b's axes (so that δq̇ = u),
-  // the rotor and generator angles.
+  // Coordinate k displaced, or its rate changed, by h (multibody/coordinates.hpp).
+  const bool rigid_shaft = model_.generator_dof == multibody::kRotor;
   auto displaced = [&](int k, double h) {
     multibody::State b = s.body;
-    if (k < 3) b.position_m[k] += h;
-    else if (k < 6) b.orientation = (b.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(h, Vec3::Unit(k - 3)))).normalized();
-    else if (k == multibody::kRotor) b.rotor_azimuth_rad += h;
-    else if (k == multibody::kGenerator) b.generator_azimuth_rad += h;
-    else if (k < multibody::kBlade) b.tower_deflection_m[k - multibody::kTower] += h;
-    else b.blade_deflection_m[(k - multibody::kBlade) / multibody::kMaxBladeModes][(k - multibody::kBlade) % multibody::kMaxBladeModes] += h;
+    multibody::displace_coordinate(b, k, h);
     return b;
   };
   auto sped_up = [&](int k, double h) {
     multibody::State b = s.body;
-    if (k < 3) b.velocity_m_s[k] += h;
-    else if (k < 6) b.angular_velocity_rad_s[k - 3] += h;
-    else if (k == multibody::kRotor) b.rotor_speed_rad_s += h;
-    else if (k == multibody::kGenerator) b.generator_speed_rad_s += h;
-    else if (k < multibody::kBlade) b.tower_deflection_rate_m_s[k - multibody::kTower] += h;
-    else b.blade_deflection_rate_m_s[(k - multibody::kBlade) / multibody::kMaxBladeModes][(k - multibody::kBlade) % multibody::kMaxBladeModes] += h;
-    if (model_.generator_dof == multibody::kRotor) b.generator_speed_rad_s = b.rotor_speed_rad_s;  // rigid shaft
+    multibody::change_coordinate_rate(b, k, h, rigid_shaft);
     return b;
   };
   // Steps of 1e-4 m (rad) and 1e-4 m/s (rad/s): central differences are then accurate to ~1e-8 of

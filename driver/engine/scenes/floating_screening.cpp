@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "decks/controller_deck.hpp"
+#include "fowtsim/multibody/coordinates.hpp"
 #include "decks/hydro_deck.hpp"
 #include "decks/waves_deck.hpp"
 #include "decks/wind_deck.hpp"
@@ -63,25 +64,6 @@ io::ValidatedDeck linearisation_deck(io::LoadedDeck deck, const std::vector<std:
   return io::validate(floating_scene_schema(), std::move(deck));
 }
 
-// A coordinate of the linearisation (multibody Dof k) displaced by h, as linearised_system does:
-// translations in g, rotations about b's axes, the rotor and generator angles, elastic modes.
-void displace(multibody::State& b, int k, double h) {
-  if (k < 3) b.position_m[k] += h;
-  else if (k < 6) b.orientation = (b.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(h, Vec3::Unit(k - 3)))).normalized();
-  else if (k == multibody::kRotor) b.rotor_azimuth_rad += h;
-  else if (k == multibody::kGenerator) b.generator_azimuth_rad += h;
-  else if (k < multibody::kBlade) b.tower_deflection_m[k - multibody::kTower] += h;
-  else b.blade_deflection_m[(k - multibody::kBlade) / multibody::kMaxBladeModes][(k - multibody::kBlade) % multibody::kMaxBladeModes] += h;
-}
-void speed_up(multibody::State& b, int k, double h, bool rigid_shaft) {
-  if (k < 3) b.velocity_m_s[k] += h;
-  else if (k < 6) b.angular_velocity_rad_s[k - 3] += h;
-  else if (k == multibody::kRotor) b.rotor_speed_rad_s += h;
-  else if (k == multibody::kGenerator) b.generator_speed_rad_s += h;
-  else if (k < multibody::kBlade) b.tower_deflection_rate_m_s[k - multibody::kTower] += h;
-  else b.blade_deflection_rate_m_s[(k - multibody::kBlade) / multibody::kMaxBladeModes][(k - multibody::kBlade) % multibody::kMaxBladeModes] += h;
-  if (rigid_shaft && k == multibody::kRotor) b.generator_speed_rad_s = b.rotor_speed_rad_s;
-}
 
 // What the static balance solves for besides the coordinates: the rotor speed (region 2, a free
 // rotor) or the collective pitch (region 3); nothing for a parked rotor.
@@ -129,10 +111,10 @@ class Balance {
     // inertias' ratio J_g/J_r = −(∂a_r/∂θ_g)/(∂a_g/∂θ_g) from the spring's pull on both.
     if (generator_ >= 0 && unknown_ != RotorUnknown::none) {
       const multibody::State base = s_.body;
-      displace(s_.body, multibody::kGenerator, 1e-4);
+      multibody::displace_coordinate(s_.body, multibody::kGenerator, 1e-4);
       const Eigen::VectorXd plus = scene_.accelerations(0.0, s_, {});
       s_.body = base;
-      displace(s_.body, multibody::kGenerator, -1e-4);
+      multibody::displace_coordinate(s_.body, multibody::kGenerator, -1e-4);
       const Eigen::VectorXd minus = scene_.accelerations(0.0, s_, {});
       s_.body = base;
       generator_weight_ = -(plus[rotor_] - minus[rotor_]) / (plus[generator_] - minus[generator_]);
@@ -226,10 +208,10 @@ class Balance {
       Eigen::MatrixXd j(m, m);
       for (Eigen::Index k = 0; k < m; ++k) {
         const int dof = dofs_[static_cast<std::size_t>(coordinates_[static_cast<std::size_t>(k)])];
-        displace(s_.body, dof, h);
+        multibody::displace_coordinate(s_.body, dof, h);
         const Eigen::VectorXd plus = residual();
         s_.body = base;
-        displace(s_.body, dof, -h);
+        multibody::displace_coordinate(s_.body, dof, -h);
         j.col(k) = (plus - residual()) / (2.0 * h);
         s_.body = base;
       }
@@ -237,7 +219,7 @@ class Balance {
       largest = step.cwiseAbs().maxCoeff();
       if (!std::isfinite(largest)) break;
       if (largest > 5.0) step *= 5.0 / largest;  // at most 5 m (rad) a step, far from the start
-      for (Eigen::Index k = 0; k < m; ++k) displace(s_.body, dofs_[static_cast<std::size_t>(coordinates_[static_cast<std::size_t>(k)])], step[k]);
+      for (Eigen::Index k = 0; k < m; ++k) multibody::displace_coordinate(s_.body, dofs_[static_cast<std::size_t>(coordinates_[static_cast<std::size_t>(k)])], step[k]);
       if (largest < 1e-8) return largest;
       if (largest < 1e-4) return largest;  // the rotor's balance moves next; the next pass polishes
     }
@@ -442,9 +424,9 @@ ScreeningResult screen_floating(const std::filesystem::path& deck_path, const st
   Eigen::MatrixXd c_state(rows_out, 2 * n);
   for (int i = 0; i < n; ++i) {
     const int k = dofs[static_cast<std::size_t>(i)];
-    difference([k](FloatingState& x, InputOffsets&, double h) { displace(x.body, k, h); }, 1e-4, da, dy);
+    difference([k](FloatingState& x, InputOffsets&, double h) { multibody::displace_coordinate(x.body, k, h); }, 1e-4, da, dy);
     c_state.col(i) = dy;
-    difference([k, rigid_shaft](FloatingState& x, InputOffsets&, double h) { speed_up(x.body, k, h, rigid_shaft); }, 1e-4, da, dy);
+    difference([k, rigid_shaft](FloatingState& x, InputOffsets&, double h) { multibody::change_coordinate_rate(x.body, k, h, rigid_shaft); }, 1e-4, da, dy);
     c_state.col(n + i) = dy;
   }
 

@@ -4,6 +4,7 @@
 // published rotor speeds, and our own time domain of the same deck in an irregular sea over one
 // period of its periodic record. The bounds and their reasons are those of
 // driver/tests/screening_tests.cpp; a few seconds. It prints the time of one screening case.
+#include <limits>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -13,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "fowtsim/post/statistics.hpp"
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/io/readers.hpp"
 #include "run/run_scene.hpp"
@@ -42,17 +44,13 @@ std::size_t channel(const ScreeningResult& r, const std::string& name) {
   return static_cast<std::size_t>(std::find(r.outputs.begin(), r.outputs.end(), name) - r.outputs.begin());
 }
 
-// Population standard deviation of a channel over t ≥ from.
+// Population standard deviation of a channel over t ≥ from (fowtsim/post's statistics).
 double std_after(const io::ChannelTable& t, const std::string& name, double from) {
-  const std::vector<double>& time = t.time();
-  const std::vector<double>& x = t.columns[*t.find(name)];
-  std::vector<double> kept;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (time[i] >= from - 1e-9) kept.push_back(x[i]);
-  const double mean = std::accumulate(kept.begin(), kept.end(), 0.0) / static_cast<double>(kept.size());
-  double sum = 0.0;
-  for (const double v : kept) sum += (v - mean) * (v - mean);
-  return std::sqrt(sum / static_cast<double>(kept.size()));
+  const auto c = t.find(name);
+  if (!c) return std::numeric_limits<double>::quiet_NaN();
+  const post::RowRange rows = post::rows_in_window(t.time(), post::TimeWindow{from, t.time().back()});
+  const std::span<const double> time(t.time().data() + rows.first, rows.size()), x(t.columns[*c].data() + rows.first, rows.size());
+  return post::channel_statistics(time, x).std;
 }
 
 // Parked, still water, WAMIT: the deck of OpenFAST's free-decay runs (openfast-runs/oc3_free_decay:
