@@ -45,12 +45,14 @@ ColumnOf<Scalar> elastic_moment(const Model& model, const ColumnOf<Scalar>& q) {
 // the sum then runs from the bottom end instead, whose natural conditions are known,
 //   M(x) = ∫_0^x (x − s) p ds + ∫_0^x T v' ds + x F_bottom + k_θ v'(0) + Σ_{x_p < x} [(x − x_p) F_p − C_p],
 // the mirror image of the top form (x → L − x turns v' and a point moment's sense).
-template <class Scalar>
-ColumnOf<Scalar> inertia_relief_moment(const Model& model, const ColumnOf<Scalar>& load_N_m, const ColumnOf<Scalar>& q,
-                                       const ColumnOf<Scalar>& inertial_q) {
+//
+// `slope` is v' = Φ' q at the strip midpoints (N): the caller that has it for many q at once
+// (a spectrum's frequencies) passes it; inertia_relief_moment below forms it.
+template <class Scalar, class Slope>
+ColumnOf<Scalar> inertia_relief_moment_with_slope(const Model& model, const ColumnOf<Scalar>& load_N_m, const Slope& slope,
+                                                  const ColumnOf<Scalar>& q, const ColumnOf<Scalar>& inertial_q) {
   const StripTable& s = model.strips;
   const auto N = s.x_m.size();
-  const ColumnOf<Scalar> slope = model.phi_slope.template cast<Scalar>() * q;
   // Point forces F_p and moments C_p: springs then masses.
   std::vector<double> point_x;
   std::vector<Scalar> point_force, point_moment;
@@ -110,6 +112,13 @@ ColumnOf<Scalar> inertia_relief_moment(const Model& model, const ColumnOf<Scalar
   }
   for (Eigen::Index j = 0; j < N; ++j) moment(j) += (model.length_m - s.x_m(j)) * top_force + top_moment;
   return moment;
+}
+
+template <class Scalar>
+ColumnOf<Scalar> inertia_relief_moment(const Model& model, const ColumnOf<Scalar>& load_N_m, const ColumnOf<Scalar>& q,
+                                       const ColumnOf<Scalar>& inertial_q) {
+  const ColumnOf<Scalar> slope = model.phi_slope.template cast<Scalar>() * q;
+  return inertia_relief_moment_with_slope(model, load_N_m, slope, q, inertial_q);
 }
 
 }  // namespace fowtsim::slender
