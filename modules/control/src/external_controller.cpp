@@ -44,6 +44,8 @@ void fill_constant_records(const External::Params& p, External::State& s) {
   record(s, swap::yaw_control_mode) = 0.0f;
   record(s, swap::generator_contactor) = 1.0f;  // main generator on until the controller says otherwise
   record(s, swap::shaft_brake) = 0.0f;
+  record(s, swap::pitch_override) = 0.0f;   // no override requested until the controller writes one
+  record(s, swap::torque_override) = 0.0f;
   record(s, swap::message_capacity) = static_cast<float>(kStringCapacity);
   record(s, swap::infile_length) = static_cast<float>(e.infile.size() + 1);
   record(s, swap::outname_length) = static_cast<float>(e.outname.size() + 1);
@@ -76,6 +78,23 @@ void call(const External::Params& p, int status, double t, External::State& s) {
     throw NumericalError({"control.dll", t, "aviFAIL", "see the controller's message; check its parameter file"},
                          fmt::format("external controller '{}' failed at t = {} s (aviFAIL = {}): {}",
                                      p.library->path(), t, fail, message_text(s)));
+  }
+}
+
+// Records 55 and 56: a controller asking the simulator's built-in pitch or torque override to take
+// over (Bladed's swap array; ServoDyn's Retrieve_avrSWAP refuses any value but 0 as an error).
+// fowtsim has no built-in override law either — the deck's control events (shutdown, faults,
+// brake) act on the library's demands instead — so a request stops the run at its time rather
+// than being silently ignored.
+void check_override_requests(const External::Params& p, double t, const External::State& s) {
+  for (const auto& [number, what] : {std::pair{swap::pitch_override, "pitch"}, std::pair{swap::torque_override, "torque"}}) {
+    const long value = std::lround(read(s, number));
+    if (value == 0) continue;
+    throw NumericalError({"control.dll", t, fmt::format("avrSWAP record {}", number),
+                          fmt::format("return 0 in record {}; model the manoeuvre with the deck's controller.events", number)},
+                         fmt::format("external controller '{}' requests the simulator's built-in {} override (record {} = {}), "
+                                     "which fowtsim does not have (nor does OpenFAST's ServoDyn)",
+                                     p.library->path(), what, number, value));
   }
 }
 
@@ -134,6 +153,7 @@ void External::advance(const Params& p, const Input& u, double t, double dt, Sta
   record(s, swap::generator_contactor) = static_cast<float>(u.generator_contactor);
   record(s, swap::shaft_brake) = static_cast<float>(u.shaft_brake);
   call(p, s.calls == 0 ? 0 : 1, t, s);
+  check_override_requests(p, t, s);
 
   s.torque_demand_N_m = read(s, swap::generator_torque_demand);
   for (int b = 0; b < kBladeCount; ++b) {

@@ -178,3 +178,25 @@ TEST_CASE("DLL errors: missing library, missing procedure, aviFAIL < 0", "[unit]
     CHECK(*e.context().time_s == 0.0);
   }
 }
+
+TEST_CASE("DLL records 55 and 56: a request for the simulator's built-in override stops the run at its time", "[unit][control]") {
+  // Intent: Bladed's pitch/torque override records are read, not ignored: like ServoDyn, any value
+  // but 0 is refused — with the record, the time of the call and the library in the message.
+  for (const auto& [suffix, record] : {std::pair{"+pitch_override", 55}, std::pair{"+torque_override", 56}}) {
+    const ExternalController::Params ep = ExternalController::make_params(test_discon(std::string("oc3_hywind") + suffix));
+    ExternalController::State s = ExternalController::make_state(ep);
+    ControllerInput u;
+    u.generator_speed_rad_s = 100.0;
+    const double dt = 0.25;
+    double t = 0.0;
+    try {
+      for (; t < 3.0; t += dt) ExternalController::advance(ep, u, t, dt, s);
+      FAIL("no NumericalError for record " << record << " = 1");
+    } catch (const NumericalError& e) {
+      CHECK(e.context().variable == "avrSWAP record " + std::to_string(record));
+      REQUIRE(e.context().time_s.has_value());
+      CHECK(*e.context().time_s == 1.0);  // the test DISCON asks from t = 1 s: the first call at or after it
+      CHECK_THAT(e.what(), Catch::Contains(record == 55 ? "pitch override" : "torque override"));
+    }
+  }
+}

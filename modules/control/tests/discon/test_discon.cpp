@@ -7,6 +7,8 @@
 // With the suffix "+trip" it also trips on overspeed: above kTripSpeed it opens the generator
 // contactor (record 35 = 0) and applies the shaft brake (record 36 = 1), latched. Every call it
 // echoes the contactor and brake records it received into the first two logging records (165, 166).
+// With "+pitch_override" or "+torque_override" it requests the simulator's built-in override
+// (record 55 or 56 = 1) from t = 1 s on.
 // Like any DISCON it keeps its state in static variables between calls.
 #include <cmath>
 #include <cstdio>
@@ -29,6 +31,7 @@ struct Controller {
   BaselineState state;
   bool trips = false;    // "+trip" given
   bool tripped = false;  // the overspeed trip has fired
+  int override_record = 0;  // 55 or 56 with "+pitch_override" / "+torque_override", else 0
 };
 std::optional<Controller> controller;  // the DISCON's state between calls
 
@@ -51,6 +54,13 @@ extern "C" __attribute__((visibility("default"))) void DISCON(float* avrSWAP, in
   }
   if (status == 0) {
     std::string name = accInfile;
+    int override_record = 0;
+    for (const auto& [suffix, record] : {std::pair{std::string("+pitch_override"), swap::pitch_override},
+                                         std::pair{std::string("+torque_override"), swap::torque_override}})
+      if (name.ends_with(suffix)) {
+        override_record = record;
+        name.resize(name.size() - suffix.size());
+      }
     const bool trips = name.size() > 5 && name.ends_with("+trip");
     if (trips) name.resize(name.size() - 5);
     const std::optional<BaselineParams> params = baseline_preset(name);
@@ -60,7 +70,7 @@ extern "C" __attribute__((visibility("default"))) void DISCON(float* avrSWAP, in
       *aviFAIL = -1;
       return;
     }
-    controller = Controller{*params, torque_curve(*params), BaselineState{}, trips, false};
+    controller = Controller{*params, torque_curve(*params), BaselineState{}, trips, false, override_record};
   }
   if (!controller) {
     set_message(avrSWAP, avcMsg, "test DISCON: called before its first call (status 0)");
@@ -88,4 +98,5 @@ extern "C" __attribute__((visibility("default"))) void DISCON(float* avrSWAP, in
   at(avrSWAP, swap::yaw_rate_demand) = 0.0f;
   at(avrSWAP, swap::pitch_override) = 0.0f;
   at(avrSWAP, swap::torque_override) = 0.0f;
+  if (controller->override_record != 0 && at(avrSWAP, swap::time) >= 1.0f) at(avrSWAP, controller->override_record) = 1.0f;
 }
