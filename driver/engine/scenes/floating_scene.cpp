@@ -594,8 +594,13 @@ std::string FloatingScene::coupling_description() const {
   std::vector<std::string> parts{model_.flexible_tower.mode_count > 0 ? "multibody with the flexible tower" : "multibody, rigid tower"};
   if (!sea_description_.empty()) parts.push_back(sea_description_);
   if (blades_) parts.push_back(blades_->description() + (rotor_ ? ", BEM on the deflected blades" : ", no aerodynamics"));
-  else if (rotor_ && model_.rr_blades.mode_count > 0) parts.push_back("Rayleigh-Ritz blades with BEM on the deflected blades at every RK4 stage");
-  else if (rotor_) parts.push_back("rigid blades with BEM at every RK4 stage");
+  else if (rotor_) {
+    // aero.induction: the inductions solved at every stage, or once per large step and held.
+    const std::string bem = rotor_->params().induction_held_over_step ? "BEM inductions solved once per large step, held over its stages"
+                                                                      : "BEM at every RK4 stage";
+    parts.push_back(model_.rr_blades.mode_count > 0 ? "Rayleigh-Ritz blades with " + bem + " on the deflected blades"
+                                                    : "rigid blades with " + bem);
+  }
   else parts.push_back("rigid blades, no aerodynamics");
   if (riser_) parts.push_back(riser_->description());
   parts.push_back(controller_ ? "controller at the large step" : "no controller (generator torque 0, pitch held)");
