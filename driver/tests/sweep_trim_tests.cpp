@@ -3,11 +3,14 @@
 // settle, while the base deck's initial state swings through a start-up transient.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <fstream>
 
 #include "fowtsim/io/readers.hpp"
 #include "fowtsim/post/statistics.hpp"
 #include "fowtsim/testing/skip.hpp"
+#include "sweep/case_expansion.hpp"
+#include "sweep/trim.hpp"
 #include "sweep_test_spec.hpp"
 
 using namespace fowtsim;
@@ -53,5 +56,27 @@ TEST_CASE("sweep trim: a case started at its steady operating point has no start
     REQUIRE(run_fowtsim("sweep " + (dir / "trimmed.yaml").string() + " --jobs 1", dir / "rerun.log") == 0);
     CHECK_THAT(read_text(dir / "rerun.log"), Catch::Contains("1 steady run(s) of 300 s (1 cached)") &&
                                                  Catch::Contains("(1 completed earlier and skipped), 0 to run"));
+  }
+}
+
+TEST_CASE("sweep trim: Rayleigh-Ritz blades start at their static deflection, other blades are left alone", "[unit][sweep]") {
+  // The base deck's facts say whether it has Rayleigh–Ritz blades; the trim then adds
+  // structure.initial_conditions.blade_deflection: static (MBBT blades start static by blades.start).
+  const std::filesystem::path dir = testing::scratch_dir("sweep_trim_rr");
+  const auto inputs = testing::source_dir() / "inputs";
+  std::ofstream(dir / "rr.yaml") << "include: [" << (inputs / "oc3_hywind/turbine_steady_15mps.yaml").string()
+                                 << "]\nstructure: {rotor: {rayleigh_ritz_blade_file: "
+                                 << (inputs / "nrel5mw/blade_elastodyn.yaml").string() << "}}\n";
+  CHECK(driver::sweep::read_base_deck_facts(dir / "rr.yaml").rayleigh_ritz_blades);
+  CHECK_FALSE(driver::sweep::read_base_deck_facts(inputs / "oc3_hywind/turbine_steady_15mps.yaml").rayleigh_ritz_blades);
+  for (const bool rr : {true, false}) {
+    std::vector<driver::sweep::SweepCase> cases(1);
+    cases[0].name = "c";
+    cases[0].wind_speed_m_s = 16.0;
+    driver::sweep::apply_trim(cases, {{16.0, driver::sweep::OperatingPoint{}}}, rr);
+    const bool has = std::any_of(cases[0].overrides.begin(), cases[0].overrides.end(), [](const driver::sweep::DeckOverride& o) {
+      return o.key_path == "structure.initial_conditions.blade_deflection" && o.yaml_value == "static";
+    });
+    CHECK(has == rr);
   }
 }

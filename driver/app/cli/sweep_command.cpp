@@ -232,8 +232,8 @@ int run_slurm(std::FILE* out, const SweepRequest& request, const SweepSpec& spec
 
 // The steady runs of `sweep.trim` (trim.hpp), run here whatever the action (they are short), cached
 // in OUTPUT_DIR/trim; then their operating points go into the cases. Throws when one fails.
-void trim_cases_in_place(std::FILE* out, const SweepRequest& request, const SweepSpec& spec, std::vector<SweepCase>& cases,
-                         const SweepLayout& layout, int lock_descriptor) {
+void trim_cases_in_place(std::FILE* out, const SweepRequest& request, const SweepSpec& spec, const BaseDeckFacts& base,
+                         std::vector<SweepCase>& cases, const SweepLayout& layout, int lock_descriptor) {
   const std::vector<SweepCase> runs = trim_cases(spec, cases);
   if (runs.empty()) return;
   const SweepLayout trims = trim_layout(layout);
@@ -261,7 +261,7 @@ void trim_cases_in_place(std::FILE* out, const SweepRequest& request, const Swee
                        fmt::format("the trim run {} did not complete ({}): {}", runs[i].name, state_name(outcome.state), outcome.message));
     points[*runs[i].wind_speed_m_s] = read_operating_point(trims.output(runs[i].name), *spec.trim);
   }
-  apply_trim(cases, points);
+  apply_trim(cases, points, base.rayleigh_ritz_blades);
 }
 
 }  // namespace
@@ -269,7 +269,8 @@ void trim_cases_in_place(std::FILE* out, const SweepRequest& request, const Swee
 int run_sweep_command(const SweepRequest& request, std::FILE* out) {
   SweepSpec spec = read_sweep_spec(request.spec);
   if (request.output_dir) spec.output_dir = *request.output_dir;
-  std::vector<SweepCase> cases = expand_cases(spec, read_base_deck_facts(spec.base_deck));
+  const BaseDeckFacts base = read_base_deck_facts(spec.base_deck);
+  std::vector<SweepCase> cases = expand_cases(spec, base);
   const SweepLayout layout{spec.output_dir};
   if (request.frequency_domain) return screen_sweep(out, spec, cases);
   if (request.action == SweepRequest::Action::list) {
@@ -284,7 +285,7 @@ int run_sweep_command(const SweepRequest& request, std::FILE* out) {
   // One sweep per folder, before any file in it changes (folder_lock.hpp).
   const SweepFolderLock lock(layout.root, fmt::format("fowtsim sweep {} ({})", request.spec.string(), action_name(request.action)), out);
   layout.create_directories();
-  if (spec.trim) trim_cases_in_place(out, request, spec, cases, layout, lock.descriptor());
+  if (spec.trim) trim_cases_in_place(out, request, spec, base, cases, layout, lock.descriptor());
   const std::vector<std::string> hashes = write_case_decks(spec, cases, layout);
   switch (request.action) {
     case SweepRequest::Action::collect:

@@ -150,6 +150,7 @@ BaseDeckFacts read_base_deck_facts(const std::filesystem::path& base_deck) {
     const io::DeckNode* model = waves->find("model");
     facts.wave_model = model ? model->scalar : "still";  // the waves schema's default
   }
+  facts.rayleigh_ritz_blades = find_path(loaded.root, {"structure", "rotor", "rayleigh_ritz_blade_file"}) != nullptr;
   if (const io::DeckNode* controller = loaded.root.find("controller")) {
     const io::DeckNode* type = controller->find("type");
     facts.controller.type = type ? type->scalar : "baseline";  // the controller schema's default

@@ -42,6 +42,7 @@ struct BaseDeckFacts {
   double turbulence_width_m = 0.0;        // wind.turbulence.width_m (0: not given)
   std::string wave_model;                 // waves.model ("" without a waves section)
   BaseController controller;              // its type and pitch limit (the parked preset)
+  bool rayleigh_ritz_blades = false;      // structure.rotor.rayleigh_ritz_blade_file given (the trim settles them)
 };
 BaseDeckFacts read_base_deck_facts(const std::filesystem::path& base_deck);
 

@@ -91,7 +91,7 @@ OperatingPoint read_operating_point(const std::filesystem::path& output, const T
   return p;
 }
 
-void apply_trim(std::vector<SweepCase>& cases, const std::map<double, OperatingPoint>& points) {
+void apply_trim(std::vector<SweepCase>& cases, const std::map<double, OperatingPoint>& points, bool settle_rayleigh_ritz_blades) {
   auto triple = [](const auto& v, std::size_t n) {
     std::string text = "[";
     for (std::size_t i = 0; i < n; ++i) text += (i ? ", " : "") + number_text(v[i]);
@@ -108,6 +108,9 @@ void apply_trim(std::vector<SweepCase>& cases, const std::map<double, OperatingP
         {"structure.initial_conditions.platform_position_m", triple(p.platform_position_m, 3), {}, true},
         {"structure.initial_conditions.platform_angles_deg", triple(p.platform_angles_deg, 3), {}, true},
     };
+    // Rayleigh–Ritz blades at their static deflection under this operating point (MBBT blades
+    // start from theirs by blades.start).
+    if (settle_rayleigh_ritz_blades) keys.push_back({"structure.initial_conditions.blade_deflection", "static", {}, false});
     if (p.tower_top_deflection_m)
       keys.push_back({"structure.initial_conditions.tower_top_deflection_m", triple(*p.tower_top_deflection_m, 2), {}, true});
     // First, so that any key the presets or the spec set over them wins.

@@ -43,8 +43,10 @@ SweepLayout trim_layout(const SweepLayout& layout);
 // The operating point from a trim run's output (its last average_s seconds).
 OperatingPoint read_operating_point(const std::filesystem::path& output, const TrimSpec& trim);
 
-// Puts each trimmed case's operating point first among its keys (by wind speed).
-void apply_trim(std::vector<SweepCase>& cases, const std::map<double, OperatingPoint>& points);
+// Puts each trimmed case's operating point first among its keys (by wind speed); with
+// `settle_rayleigh_ritz_blades` (the base deck has them) the blades start at their static deflection
+// there (structure.initial_conditions.blade_deflection: static).
+void apply_trim(std::vector<SweepCase>& cases, const std::map<double, OperatingPoint>& points, bool settle_rayleigh_ritz_blades);
 
 // Whether a case is trimmed (see above).
 bool is_trimmed(const SweepCase& c);

@@ -154,6 +154,12 @@ const DeckSection<multibody::Params>& structure_section() {
                                            .optional().doc("TTDspFA, TTDspSS (flexible tower; on the 1st mode of each "
                                                            "direction; ±20 m: a quarter of a tower's height)"),
              &InitialConditions::tower_top_deflection_m)
+        .key("blade_deflection", Schema::choice({"undeflected", "static"}).default_value("undeflected")
+                                     .doc("Rayleigh-Ritz blades: undeflected (ElastoDyn's OoPDefl = IPDefl = 0) or their static "
+                                          "deflection under gravity, the aerodynamic loads and the spin of the initial state "
+                                          "(a sweep's trim sets static); MBBT blades start as blades.start says, rigid blades "
+                                          "ignore it"),
+             &InitialConditions::rayleigh_ritz_blades_static, [](const std::string& v) { return v == "static"; })
         .key("blade_pitch_deg", bounded(-90.0, 90.0, "BlPitch: initial pitch of every blade, held until the controller's "
                                                      "first call (90° is feathered; beyond, the blade faces backwards)"),
              &InitialConditions::blade_pitch_deg);

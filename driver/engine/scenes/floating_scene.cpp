@@ -347,10 +347,11 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
   return a;
 }
 
-void FloatingScene::settle_elastic(double t, FloatingState& s) {
+void FloatingScene::settle_elastic(double t, FloatingState& s, Settle how) {
+  const int first_elastic = how == Settle::blades_in_motion ? multibody::kBlade : multibody::kTower;
   std::vector<int> elastic;
   for (const int k : coordinates())
-    if (k >= multibody::kTower) elastic.push_back(k);
+    if (k >= first_elastic) elastic.push_back(k);
   if (elastic.empty()) return;
   const auto n = static_cast<Eigen::Index>(elastic.size());
   auto coordinate = [&](multibody::State& b, int k) -> double& {
@@ -365,9 +366,11 @@ void FloatingScene::settle_elastic(double t, FloatingState& s) {
     return f;
   };
   multibody::State body = s.body;
-  body.velocity_m_s.setZero();
-  body.angular_velocity_rad_s.setZero();
-  body.rotor_speed_rad_s = body.generator_speed_rad_s = 0.0;
+  if (how == Settle::tower_and_blades_at_rest) {
+    body.velocity_m_s.setZero();
+    body.angular_velocity_rad_s.setZero();
+    body.rotor_speed_rad_s = body.generator_speed_rad_s = 0.0;
+  }
   for (const int k : elastic) {
     coordinate(body, k) = 0.0;
     if (k < multibody::kBlade) body.tower_deflection_rate_m_s[k - multibody::kTower] = 0.0;
@@ -392,7 +395,9 @@ void FloatingScene::settle_elastic(double t, FloatingState& s) {
       return;
     }
   }
-  throw NumericalError({"modes", t, "static deflection of the tower and blades", "check the deck's stiffness and loads"},
+  throw NumericalError({how == Settle::blades_in_motion ? "floating" : "modes", t,
+                        how == Settle::blades_in_motion ? "static deflection of the blades" : "static deflection of the tower and blades",
+                        "check the deck's stiffness and loads"},
                        "Newton's method did not converge in 20 iterations");
 }
 
@@ -419,6 +424,8 @@ FloatingState FloatingScene::make_state() {
   s.sea = sea_->initial_data();
   if (rotor_) s.aero = rotor_->make_data();
   if (riser_) s.riser = riser_->make_data(s.body);
+  if (structure_.initial_conditions.rayleigh_ritz_blades_static && model_.rr_blades.mode_count > 0)
+    settle_elastic(0.0, s, Settle::blades_in_motion);
   if (blades_) {
     s.blades = blades_->make_data();
     stage_loads_->act_on(s.held, s.sea, s.aero ? &*s.aero : nullptr, &*s.blades);

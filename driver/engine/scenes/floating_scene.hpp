@@ -115,11 +115,18 @@ class FloatingScene {
   // memory is held (potential flow enters through A(∞)). The flexible blades' own states are not in
   // x: InputError with them.
   Eigen::MatrixXd linearised_system(double t, const FloatingState& s);
-  // The flexible tower's and Rayleigh–Ritz blades' static deflection in `s` at time t: their rows of
-  // the generalised forces vanish, f_e(q_e) = 0, with every speed zero and the rigid coordinates
-  // where they are (gravity, the sea and the aerodynamics of that state), by Newton's method on a
-  // central-difference Jacobian. NumericalError if it does not converge in 20 iterations.
-  void settle_elastic(double t, FloatingState& s);
+  // Static deflection in `s` at time t, by Newton's method on a central-difference Jacobian: the
+  // elastic rows of the generalised forces vanish, f_e(q_e) = 0, with the elastic rates zero and the
+  // rigid coordinates where they are (gravity, the sea and the aerodynamics of that state).
+  //  - tower_and_blades_at_rest (fowtsim modes): the flexible tower and the Rayleigh–Ritz blades,
+  //    every speed zero;
+  //  - blades_in_motion (structure.initial_conditions.blade_deflection: static): the Rayleigh–Ritz
+  //    blades only, the rigid speeds as they are — the spin's centrifugal stiffening and the
+  //    aerodynamic loads of the operating rotor; the rigid DOFs' accelerations, small at a trimmed
+  //    start, do not enter.
+  // NumericalError if it does not converge in 20 iterations.
+  enum class Settle { tower_and_blades_at_rest, blades_in_motion };
+  void settle_elastic(double t, FloatingState& s, Settle how = Settle::tower_and_blades_at_rest);
   // The multibody DOFs (model.hpp Dof indices) the linearisation's coordinates are, in order: the
   // model's DOFs less the held ones.
   std::vector<int> coordinates() const;

@@ -115,6 +115,10 @@ struct InitialConditions {
   std::array<double, 2> tower_top_deflection_m{};  // TTDspFA, TTDspSS: put on the 1st FA / SS mode (ElastoDyn); flexible tower only [m]
   double blade_pitch_deg = 0.0;           // BlPitch [deg]: every blade's, held until the controller's first call
                                           // (the rotor aerodynamics and the flexible blades take it; the chain does not)
+  // Rayleigh–Ritz blades start undeflected (ElastoDyn's OoPDefl = IPDefl = 0) or at their static
+  // deflection under gravity, the aerodynamic loads and the spin of the initial state (the scene
+  // settles them; other blades ignore it: MBBT blades have `blades.start`).
+  bool rayleigh_ritz_blades_static = false;
 };
 
 // Which DOFs a load case frees (ElastoDyn's PtfmSgDOF … GenDOF switches). A held platform DOF
