@@ -107,9 +107,9 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
   // Checkpoints (issue 16): <output>.chk every T, and a restart from one, both checked first.
   long checkpoint_steps = 0, k0 = 0;
   if ((request.checkpoint_every_s || request.restart_path) && !scene.save)
-    throw InputError({"scene", std::nullopt, "--checkpoint-every/--restart", "the floating-turbine or toy scene"},
-                     "this run does not write checkpoints (the floating turbine with the built-in controller and the toy "
-                     "oscillators do)");
+    throw InputError({"scene", std::nullopt, "--checkpoint-every/--restart", "the floating-turbine, toy or slender scene"},
+                     "this run does not write checkpoints (the floating turbine with the built-in controller, the toy "
+                     "oscillators and the slender body do)");
   if (request.checkpoint_every_s) {
     checkpoint_steps = std::lround(*request.checkpoint_every_s / dt);
     // A multiple of the row interval too: a restart's output then continues the rows exactly
