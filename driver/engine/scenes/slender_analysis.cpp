@@ -4,9 +4,6 @@
 #include <complex>
 #include <numbers>
 
-#include <fmt/format.h>
-
-#include "fowtsim/core/error.hpp"
 #include "fowtsim/slender/bending_moment.hpp"
 #include "fowtsim/waves/spectrum.hpp"
 #include "scenes/slender_time_domain.hpp"
