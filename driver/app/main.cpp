@@ -151,7 +151,7 @@ int main(int argc, char** argv) {
   double checkpoint_every = 0;
   std::string restart;
   run->add_option("--checkpoint-every", checkpoint_every,
-                  "write the scene's whole state to <output>.chk every T seconds (floating turbine)")
+                  "write the scene's whole state to <output>.chk every T seconds (floating turbine, toy oscillators, slender body)")
       ->check(positive("a positive number of seconds"));
   run->add_option("--restart", restart,
                   "continue bit-identically from a checkpoint of the same deck; the output starts at its time")

@@ -13,6 +13,9 @@
 #include "fowtsim/toy/slow_oscillator.hpp"
 #include "run/checkpoint.hpp"
 #include "scenes/floating_scene.hpp"
+#include "scenes/slender_analysis.hpp"
+#include "scenes/slender_scene.hpp"
+#include "scenes/slender_time_domain.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -90,6 +93,35 @@ TEST_CASE("every field of the scene states is in its field list", "[unit][scene_
   check_every_field_listed<toy::FastOscillator::State>("toy::FastOscillator::State");
   check_every_field_listed<toy::FastOscillator::Input>("toy::FastOscillator::Input");
   check_every_field_listed<ModulePair<toy::SlowOscillator, toy::FastOscillator>::State>("ModulePair::State");
+  // The slender scene's state: the module's, the sea's current block and the statistics' sums.
+  check_every_field_listed<slender::SlenderBody::State>("slender::SlenderBody::State");
+  check_every_field_listed<slender::WaveBlock>("slender::WaveBlock");
+  check_every_field_listed<slender::HarmonicSums>("slender::HarmonicSums");
+  check_every_field_listed<slender::DeviationSums>("slender::DeviationSums");
+  check_every_field_listed<SlenderTimeState>("SlenderTimeState");
+}
+
+TEST_CASE("slender time domain: a row leaves the scene state as it is, and a copy continues bit-identically",
+          "[unit][scene_state]") {
+  const SlenderCase c = read_slender_case(testing::source_dir() / "inputs/slender/riser_jonswap.yaml",
+                                          {"simulation.t_max_s=60.0", "analysis.transient_s=10.0"});
+  const SlenderResults r = solve_frequency_domain(c.deck);
+  SlenderTimeDomain time_domain(c.deck, r.model, r.modes, c.dt_s, 1200);
+  SlenderTimeState s = time_domain.make_state();
+  for (int k = 0; k < 700; ++k) time_domain.step(s);  // past the window's start, near the first block's end
+  const std::string before = state_bytes(s);
+  const VecX row = time_domain.outputs(s).moment_inertia_relief_N_m;
+  CHECK(state_bytes(s) == before);
+  SlenderTimeState copy = s;
+  for (int k = 0; k < 100; ++k) {  // into the sea's second block
+    time_domain.step(s);
+    time_domain.step(copy);
+  }
+  CHECK(s.waves.first_sample > 0);
+  CHECK(state_bytes(copy) == state_bytes(s));
+  const VecX copied = time_domain.outputs(copy).moment_inertia_relief_N_m;  // outputs() returns the workspace's
+  CHECK(copied == time_domain.outputs(s).moment_inertia_relief_N_m);
+  CHECK(row.allFinite());
 }
 
 TEST_CASE("member_count counts an aggregate's members, whatever their types", "[unit][scene_state]") {

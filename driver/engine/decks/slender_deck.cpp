@@ -296,9 +296,9 @@ std::optional<long> whole_steps(double span, double step) {
   return n >= 1 && std::abs(static_cast<double>(n) * step - span) <= 1e-9 * span ? std::optional(n) : std::nullopt;
 }
 
-// The solution holds its largest arrays whole in memory, strips × samples values each (the JONSWAP
-// transfer table, the time domain's history, the record's FFT): past about 2 GB a deck is refused
-// here, naming the key, instead of failing as std::bad_alloc mid-solve.
+// The solution holds its largest arrays whole in memory, strips × wave components values each (the
+// JONSWAP transfer table, the time domain's sea coefficients and blocks): past about 2 GB a deck is
+// refused here, naming the key, instead of failing as std::bad_alloc mid-solve.
 void check_size(const io::ValidatedDeck& deck, const std::string& key, const std::string& expected, std::size_t strips,
                 double samples, const char* what) {
   constexpr double kMaxValues = 4e7;
@@ -333,11 +333,14 @@ SlenderDeck read_slender_deck(const io::ValidatedDeck& deck, double time_step_s,
     check_size(deck, "sea.record_s", "a shorter record (fewer wave components) or fewer strips", strips,
                (d.sea.max_omega_rad_s - d.sea.min_omega_rad_s) * d.sea.record_s / (2 * std::numbers::pi), "wave components");
   if (d.analysis.time_domain) {
-    check_size(deck, "simulation.t_max_s", "a shorter simulated time, a longer simulation.dt_s or fewer strips", strips,
-               2 * t_max_s / time_step_s, "half steps");
-    if (!d.sea.regular)
-      check_size(deck, "sea.record_s", "a shorter record or a longer simulation.dt_s", strips, 2 * d.sea.record_s / time_step_s,
-                 "half steps of the record");
+    // Nothing grows with the run (the sea comes in blocks, the statistics are sums); the sample
+    // index and the random sea's phase exponents (wave_blocks.cpp) must stay exact integers.
+    if (2 * t_max_s / time_step_s > 0x1p52)
+      bad(deck, "simulation.t_max_s", "at most 2^51 steps of simulation.dt_s",
+          fmt::format("{:.3g} half steps are more than a run can count", 2 * t_max_s / time_step_s));
+    if (!d.sea.regular && 2 * d.sea.record_s / time_step_s > 0x1p30)
+      bad(deck, "sea.record_s", "at most 2^30 half steps of simulation.dt_s in the record (a shorter record or a longer dt_s)",
+          fmt::format("{:.3g} half steps of the record", 2 * d.sea.record_s / time_step_s));
     // The TD amplitude is a Fourier coefficient over whole wave periods; the random sea is sampled
     // at Δt/2 by an FFT of the record's length, so both must be whole numbers of steps.
     if (d.sea.regular && !whole_steps(d.sea.period_s, time_step_s))

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <exception>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -84,8 +85,9 @@ std::uint64_t reserve_bytes(std::size_t channels, const std::vector<std::filesys
 
 }  // namespace
 
-OutputSet::OutputSet(const std::filesystem::path& base, const std::string& format, std::vector<WholeFile> whole)
-    : lock_(base), base_(base) {
+OutputSet::OutputSet(const std::filesystem::path& base, const std::string& format, std::vector<WholeFile> whole,
+                     std::vector<std::string> end_suffixes)
+    : lock_(base), base_(base), end_count_(end_suffixes.size()) {
   if (format == "h5" || format == "both") paths_.push_back(std::filesystem::path(base.string() + ".h5"));
   if (format == "out" || format == "both") paths_.push_back(std::filesystem::path(base.string() + ".out"));
   if (format == "outb") paths_.push_back(std::filesystem::path(base.string() + ".outb"));
@@ -94,6 +96,7 @@ OutputSet::OutputSet(const std::filesystem::path& base, const std::string& forma
     paths_.push_back(std::filesystem::path(base.string() + w.suffix));
     whole_bytes_.push_back(std::move(w.bytes));
   }
+  for (const std::string& suffix : end_suffixes) paths_.push_back(std::filesystem::path(base.string() + suffix));
   for (const auto& p : paths_) {
     if (std::filesystem::is_directory(p))
       throw InputError({"run", std::nullopt, "-o", "a file name, not a folder's"},
@@ -128,6 +131,7 @@ OutputSet::~OutputSet() {
   sinks_.clear();  // each writer closes its file, keeping the rows appended so far
   if (rows_ > 0) {
     rename_all();
+    remove_stale_end_files();
   } else {
     std::error_code ignored;
     for (const auto& p : running_paths_) std::filesystem::remove(p, ignored);
@@ -180,13 +184,28 @@ void OutputSet::append(double time_s, std::span<const double> values) {
 void OutputSet::sync() {
   guarded([&] {
     for (auto& sink : sinks_) sink->flush();
-    for (const auto& p : running_paths_) sync_file(p);
+    // The end tables are written (and synced) whole by write_end_files, after the last step.
+    for (std::size_t i = 0; i + end_count_ < running_paths_.size(); ++i) sync_file(running_paths_[i]);
   });
+}
+
+void OutputSet::write_end_files(const std::vector<std::string>& bytes) {
+  if (bytes.size() != end_count_) throw std::logic_error("OutputSet::write_end_files: one table per end suffix");
+  const std::size_t first = running_paths_.size() - end_count_;
+  for (std::size_t i = 0; i < end_count_; ++i) write_file_atomically(running_paths_[first + i], bytes[i]);
+  end_written_ = true;
+}
+
+void OutputSet::remove_stale_end_files() noexcept {
+  if (end_written_) return;
+  std::error_code ignored;
+  for (const auto& p : end_paths()) std::filesystem::remove(p, ignored);
 }
 
 void OutputSet::finish(const io::RunEnd& end) {
   finished_ = true;
   reserve_.release();
+  remove_stale_end_files();
   try {
     for (auto& sink : sinks_) sink->finish(end);
   } catch (...) {

@@ -41,7 +41,7 @@ std::pair<std::filesystem::path, std::string> split_known_extension(const std::f
 // The temporary name `final_path` is written under while the run is going.
 std::filesystem::path running_path(const std::filesystem::path& final_path);
 
-// A file a run computes whole before its time loop (the slender scene's profile table): named
+// A file a run computes whole before its time loop (the slender scene's spectra): named
 // base + suffix and owned like the time series, so it cannot be clobbered by a second run or left
 // half-written under its final name.
 struct WholeFile {
@@ -52,10 +52,13 @@ struct WholeFile {
 class OutputSet {
  public:
   // format: "h5", "out", "outb", "both" (.h5 and .out) or "none" (only `whole`); files are
-  // base + ".h5" / ".out" / ".outb", then base + each whole file's suffix; the folder is created.
-  // Takes the lock and moves a dead run's temporaries aside; a final name that is a folder is an
-  // InputError. Creates no output file yet.
-  OutputSet(const std::filesystem::path& base, const std::string& format, std::vector<WholeFile> whole = {});
+  // base + ".h5" / ".out" / ".outb", then base + each whole file's suffix, then base + each of
+  // `end_suffixes`: tables complete only when the run is (the slender scene's profiles, statistics
+  // over the whole run), written by write_end_files. The folder is created. Takes the lock and
+  // moves a dead run's temporaries aside; a final name that is a folder is an InputError. Creates
+  // no output file yet.
+  OutputSet(const std::filesystem::path& base, const std::string& format, std::vector<WholeFile> whole = {},
+            std::vector<std::string> end_suffixes = {});
   // Without finish(): the writers close their files (status "incomplete"); files holding at
   // least one row get their final name, files without any are removed. Never throws.
   ~OutputSet();
@@ -72,6 +75,11 @@ class OutputSet {
   // Every row appended so far on the disk (written and fsync'ed): a checkpoint written after this
   // is never ahead of the rows.
   void sync();
+  // The end tables' bytes, one per end suffix in order, written under their running names
+  // (complete and fsync'ed or absent). Only a run that took its last step calls it: a run that
+  // fails or is interrupted leaves no end table — and removes an earlier run's of the same name,
+  // which would not describe the rows beside it.
+  void write_end_files(const std::vector<std::string>& bytes);
   // Closes every file with `end` and renames it to its final name; if the run completed, the files
   // named by adopt() are then removed.
   void finish(const io::RunEnd& end);
@@ -83,9 +91,13 @@ class OutputSet {
   const std::vector<std::filesystem::path>& running_paths() const { return running_paths_; }  // while running
   const std::vector<std::filesystem::path>& set_aside() const { return set_aside_; }  // dead runs' temporaries, kept
   const std::vector<std::string>& notes() const { return notes_; }  // for the run's summary
+  std::vector<std::filesystem::path> end_paths() const {  // final names of the end tables
+    return {paths_.end() - static_cast<std::ptrdiff_t>(end_count_), paths_.end()};
+  }
 
  private:
   std::string rename_all() noexcept;  // running → final names; what failed, or ""
+  void remove_stale_end_files() noexcept;  // no end table written: an earlier run's are removed
   template <class Write>
   void guarded(Write&& write);  // runs `write`; on failure frees the reserve and says why
 
@@ -99,6 +111,8 @@ class OutputSet {
   std::vector<std::filesystem::path> set_aside_;
   std::vector<std::filesystem::path> adopted_;
   std::vector<std::string> notes_;
+  std::size_t end_count_ = 0;  // the end tables: the last end_count_ paths
+  bool end_written_ = false;
   std::size_t rows_ = 0;
   bool finished_ = false;
 };

@@ -107,9 +107,9 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
   // Checkpoints (issue 16): <output>.chk every T, and a restart from one, both checked first.
   long checkpoint_steps = 0, k0 = 0;
   if ((request.checkpoint_every_s || request.restart_path) && !scene.save)
-    throw InputError({"scene", std::nullopt, "--checkpoint-every/--restart", "the floating-turbine or toy scene"},
-                     "this run does not write checkpoints (the floating turbine with the built-in controller and the toy "
-                     "oscillators do)");
+    throw InputError({"scene", std::nullopt, "--checkpoint-every/--restart", "the floating-turbine, toy or slender scene"},
+                     "this run does not write checkpoints (the floating turbine with the built-in controller, the toy "
+                     "oscillators and the slender body do)");
   if (request.checkpoint_every_s) {
     checkpoint_steps = std::lround(*request.checkpoint_every_s / dt);
     // A multiple of the row interval too: a restart's output then continues the rows exactly
@@ -138,7 +138,7 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
   const std::filesystem::path base = checkpoint && !request.output_base ? checkpoint->output_base : plan.base;
   const std::filesystem::path checkpoint_file = base.string() + ".chk";
   const std::filesystem::path absolute_base = std::filesystem::absolute(base);  // recorded in checkpoints
-  OutputSet outputs(base, plan.format, std::move(scene.whole_files));
+  OutputSet outputs(base, plan.format, std::move(scene.whole_files), scene.end_file_suffixes);
   scene.metadata.version = kVersion;
   if (!request.deck_settings.empty()) {  // the deck hash covers them; this says what they were
     std::string settings;
@@ -199,6 +199,7 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
       }
       if (progress) progress(t, plan.t_max_s);
     }
+    if (k == steps && scene.end_files) outputs.write_end_files(scene.end_files());
   } catch (const std::exception& e) {  // numerical trouble, or a failing external controller
     // The failure is what the user needs: a file that cannot be closed on top of it keeps its
     // rows and says "running" or "incomplete" (the writers' own guarantees).
@@ -211,7 +212,10 @@ RunReport run_fixed_steps(const RunRequest& request, const FixedStepPlan& plan, 
   report.wall_s = elapsed();
   report.simulated_s = t;
   report.large_steps = k - k0;
-  if (k < steps) report.interrupted_by = interrupt_signal();
+  if (k < steps) {
+    report.interrupted_by = interrupt_signal();
+    for (const auto& p : outputs.end_paths()) std::erase(report.outputs, p);  // an interrupted run writes none
+  }
   if (scene.warnings) scene.warnings(report.warnings);
   outputs.finish({report.wall_s, report.interrupted_by ? interrupted_status(t, report.interrupted_by) : "completed", t,
                   report.warnings});

@@ -51,6 +51,11 @@ struct FixedStepScene {
   std::function<void(CheckpointReader&)> load;
   // Tables the scene computed before the loop, written and owned with the time series.
   std::vector<WholeFile> whole_files;
+  // Tables complete only when the run is (statistics over the whole run): their suffixes, named
+  // before the loop, and their bytes (one per suffix), asked for once the last step is taken. An
+  // interrupted or failed run writes none and removes an earlier run's (OutputSet::write_end_files).
+  std::vector<std::string> end_file_suffixes;
+  std::function<std::vector<std::string>()> end_files;
 };
 
 // The time axis and the files of a run: rows at t0, t0 + dt, …, t0 + steps·dt.

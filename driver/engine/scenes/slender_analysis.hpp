@@ -1,14 +1,14 @@
 #pragma once
 // The slender-body analysis of a deck (modules/slender, seed 004): the model, its modes, the
 // frequency-domain solution (drag linearised, mode acceleration) and the time-domain one (nonlinear
-// Morison), each reduced to profiles along the body — amplitudes in a regular wave, RMS in a
-// JONSWAP sea — so that the two can be set side by side (the seed's figures). The scene, the
-// driver tests and `fowtsim verify slender` all run through here.
+// Morison, stepped by scenes/slender_time_domain.hpp), each reduced to profiles along the body —
+// amplitudes in a regular wave, RMS in a JONSWAP sea — so that the two can be set side by side (the
+// seed's figures). The scene, the driver tests and `fowtsim verify slender` all run through here.
 #include <optional>
 
 #include "decks/slender_deck.hpp"
 #include "fowtsim/slender/modes.hpp"
-#include "fowtsim/slender/time_domain.hpp"
+#include "fowtsim/slender/model.hpp"
 
 namespace fowtsim::driver {
 
@@ -35,13 +35,19 @@ struct SlenderResults {
   std::optional<SlenderProfiles> frequency_domain;
   std::optional<SlenderSpectra> spectra;             // frequency domain, JONSWAP sea
   std::optional<SlenderProfiles> time_domain;        // over [transient, t_max]
-  std::optional<slender::TimeDomainResult> history;  // at every step dt
-  VecX wave_elevation_m;                             // η at the body at every step (time domain)
 };
 
-// Solves what deck.analysis asks; the time domain over [0, t_max_s] in steps of dt_s, from rest.
-// Throws InputError (unlocated) when the transient leaves no whole wave period or no samples.
+// The model, its modes and, if deck.analysis asks, the frequency domain (time_domain left empty).
+SlenderResults solve_frequency_domain(const SlenderDeck& deck);
+
+// Solves what deck.analysis asks; the time domain over [0, t_max_s] in steps of dt_s, from rest,
+// stepped as the scene steps it (SlenderTimeDomain) without writing anything. Throws InputError
+// (unlocated) when the transient leaves no whole wave period or no samples.
 SlenderResults solve_slender(const SlenderDeck& deck, double dt_s, double t_max_s);
+
+// Profiles with their stresses: moment / Z at the outer fibre, per strip.
+SlenderProfiles profiles_with_stress(const slender::Model& model, VecX displacement_m, VecX moment_elastic_N_m,
+                                     VecX moment_inertia_relief_N_m);
 
 // max_i |other_i − reference_i| / max_i |reference_i|: how far two profiles along the body part,
 // against the reference's peak (a profile's near-zero ends would make pointwise ratios meaningless).

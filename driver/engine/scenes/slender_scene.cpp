@@ -1,6 +1,8 @@
 #include "scenes/slender_scene.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -11,6 +13,7 @@
 #include "run/output_set.hpp"
 #include "scenes/scene_runner.hpp"
 #include "scenes/slender_analysis.hpp"
+#include "scenes/slender_time_domain.hpp"
 
 namespace fowtsim::driver {
 namespace {
@@ -28,8 +31,11 @@ constexpr ProfileColumn kColumns[] = {
     {"stress_ir_Pa", &SlenderProfiles::stress_inertia_relief_Pa},
 };
 
-// The profile table, <output>.amplitude.csv (regular wave) or <output>.rms.csv (JONSWAP).
-WholeFile profiles_csv(const SlenderResults& r, bool regular) {
+// The profile table: <output>.amplitude.csv (regular wave) or <output>.rms.csv (JONSWAP).
+std::string profiles_suffix(bool regular) { return regular ? ".amplitude.csv" : ".rms.csv"; }
+
+// Its bytes: x, D, then the FD and the TD profiles that were solved.
+std::string profiles_csv(const SlenderResults& r) {
   const std::vector<std::pair<const char*, const SlenderProfiles*>> domains = {
       {"fd", r.frequency_domain ? &*r.frequency_domain : nullptr}, {"td", r.time_domain ? &*r.time_domain : nullptr}};
   std::string csv = "x_m,outer_diameter_m";
@@ -45,7 +51,7 @@ WholeFile profiles_csv(const SlenderResults& r, bool regular) {
         for (const ProfileColumn& c : kColumns) csv += fmt::format(",{:.10g}", (p->*c.values)(i));
     csv += '\n';
   }
-  return {regular ? ".amplitude.csv" : ".rms.csv", std::move(csv)};
+  return csv;
 }
 
 // What was solved: the model, its modes and the frequency domain's drag linearisation.
@@ -143,24 +149,23 @@ SlenderCase read_slender_case(const std::filesystem::path& path, const std::vect
 }
 
 RunReport run_slender_scene(const RunRequest& request, const ProgressCallback& progress) {
-  // Refused before the solve: the module integrates the whole record at once (no stepping state,
-  // modules/slender README "Not done"), so there is nothing to save mid-run nor to restart from.
-  if (request.checkpoint_every_s || request.restart_path)
-    throw InputError({"slender", std::nullopt, request.restart_path ? "--restart" : "--checkpoint-every",
-                      "run without it: a slender deck runs in seconds"},
-                     fmt::format("{}: the slender scene solves the whole record before it writes anything, so it neither "
-                                 "writes checkpoints nor restarts from one",
-                                 request.deck_path.string()));
   const io::ValidatedDeck deck = io::read_deck(slender_scene_schema(), request.deck_path, request.deck_settings);
   const SlenderCase c = read_slender_case(deck, request.t_max_s);
   const SlenderDeck& d = c.deck;
-  const SlenderResults r = located(deck.section("slender"), [&] { return solve_slender(d, c.dt_s, c.t_max_s); });
+  const io::ValidatedDeck section = deck.section("slender");
+  SlenderResults r = located(section, [&] { return solve_frequency_domain(d); });
   const std::vector<Station> stations = stations_of(r.model, d.analysis.stations_m);
-  std::vector<WholeFile> tables{profiles_csv(r, d.sea.regular)};
+  std::vector<WholeFile> tables;
   if (r.spectra) tables.push_back(spectra_csv(*r.spectra, stations));
 
   RunReport report;
-  if (r.history) {
+  if (d.analysis.time_domain) {
+    // The module stepped by the run loop (scenes/slender_time_domain.hpp): its state is all the
+    // scene changes, so a checkpoint writes it and a restart continues bit-identically.
+    const auto time_domain = located(section, [&] {
+      return std::make_unique<SlenderTimeDomain>(d, r.model, r.modes, c.dt_s, std::lround(c.t_max_s / c.dt_s));
+    });
+    SlenderTimeState state = time_domain->make_state();
     const std::vector<ChannelInfo> all = channels(r, stations);
     const std::vector<std::size_t> picked = select_channels(deck, all, "slender");
     FixedStepScene scene;
@@ -168,28 +173,35 @@ RunReport run_slender_scene(const RunRequest& request, const ProgressCallback& p
     scene.metadata.extra = {{"scene", "slender"}};
     if (!d.sea.regular) scene.metadata.seeds = {d.sea.seed};
     for (WholeFile& t : tables) scene.whole_files.push_back(std::move(t));
-    // The module integrates the whole record at once (it has no stepping state yet, modules/slender
-    // README "Not done"); the loop replays it step by step into the writers.
-    Eigen::Index step = 0;
     std::vector<double> values(all.size());
-    const slender::TimeDomainResult& h = *r.history;
-    scene.step = [&](double, double) { ++step; };
+    scene.step = [&](double, double) { time_domain->step(state); };
     scene.row = [&](double, std::span<double> row) {
-      values[0] = r.wave_elevation_m(step);
+      const slender::SlenderBody::Output& out = time_domain->outputs(state);
+      values[0] = time_domain->wave_elevation_m(state);
       for (std::size_t k = 0; k < stations.size(); ++k) {
         const Eigen::Index i = stations[k].strip;
         const double Z = r.model.strips.section_modulus_m3(i);
-        const double ei = h.moment_elastic_N_m(i, step), ir = h.moment_inertia_relief_N_m(i, step);
-        const double station[5] = {h.displacement_m(i, step), ei / 1e3, ir / 1e3, ei / Z / 1e6, ir / Z / 1e6};
+        const double ei = out.moment_elastic_N_m(i), ir = out.moment_inertia_relief_N_m(i);
+        const double station[5] = {out.displacement_m(i), ei / 1e3, ir / 1e3, ei / Z / 1e6, ir / Z / 1e6};
         std::copy(station, station + 5, values.begin() + 1 + 5 * static_cast<std::ptrdiff_t>(k));
       }
       for (std::size_t k = 0; k < picked.size(); ++k) row[k] = values[picked[k]];
+    };
+    scene.save = [&](CheckpointWriter& w) { w.io(state); };
+    scene.load = [&](CheckpointReader& reader) { reader.io(state); };
+    // The profiles hold the TD statistics over the whole window: written once the last step is
+    // taken, never from part of the run.
+    scene.end_file_suffixes = {profiles_suffix(d.sea.regular)};
+    scene.end_files = [&] {
+      r.time_domain = time_domain->profiles(state);
+      return std::vector<std::string>{profiles_csv(r)};
     };
     report = run_fixed_steps(request, deck, std::move(scene), progress);
     report.coupling = "none (one body)";
     report.results.push_back(solution(r));
   } else {
-    // No time series: the table alone, still under the run's lock and written whole.
+    // No time series: the tables alone, still under the run's lock and written whole.
+    tables.insert(tables.begin(), WholeFile{profiles_suffix(d.sea.regular), profiles_csv(r)});
     OutputSet outputs(output_plan(request, deck).base, "none", std::move(tables));
     outputs.begin({}, {});
     outputs.finish({0.0, "completed", 0.0, {}});

@@ -4,6 +4,11 @@
 // domain or both. It writes the profiles along the body — <output>.amplitude.csv in a regular wave,
 // <output>.rms.csv in a JONSWAP sea — and, for the time domain, the time series at the deck's
 // stations in the usual output formats. Its keys are listed by `fowtsim --help-deck` and in inputs/slender/.
+// The frequency domain is solved before the loop; the time domain is stepped by the run loop
+// (scenes/slender_time_domain.hpp: the module's RK4 step, the sea in blocks, the TD profiles
+// accumulated step by step), its one SlenderTimeState is what checkpoints write and restarts read,
+// and the profile table, complete only with the last step, is written after the loop (an
+// interrupted or failed run leaves none).
 #include <filesystem>
 #include <optional>
 #include <string>

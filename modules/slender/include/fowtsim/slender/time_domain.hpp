@@ -1,11 +1,8 @@
 #pragma once
-// Time-domain solution (seed 004, slides "Solution in Time Domain", solve4XXXTIMEResponse.m and
-// mode_acc.m): the modal first-order system ż = [ȧ; Q_b − C_b ȧ − Ω² a], z = [a; ȧ] (the slide's
-// ż = B − Az), with C_b from structural damping only and the full nonlinear Morison force on the
-// relative velocity at each strip in Q_b (slide "Wave Force - Morison's Equation"):
-//   f = ρ Cm A u̇ + ½ρ Cd D |u − v̇|(u − v̇)   (the −ρCaA v̈ part is the added mass in M).
-// Fixed-step RK4 (the seed used ode45); the response is recovered by mode acceleration,
-// q = K⁻¹[Q − MΨä − CΨȧ] with ä = Q_b − C_b ȧ − Ω²a re-evaluated at the output time.
+// A whole time-domain record at once, for the module's tests and any caller that holds the wave
+// history: the stepping module of time_stepping.hpp (RK4, nonlinear Morison drag, mode-acceleration
+// recovery; seed 004 "Solution in Time Domain") run from rest over a WaveHistory, every output kept.
+// The engine steps the module itself instead (driver/engine/scenes/slender_time_domain.hpp).
 #include "fowtsim/slender/frequency_domain.hpp"
 #include "fowtsim/slender/wave_synthesis.hpp"
 
