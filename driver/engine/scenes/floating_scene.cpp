@@ -165,14 +165,6 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   if (structure_.rotor.flexible_blades && !deck.has("blades"))
     throw InputError({"floating", std::nullopt, "structure.rotor.flexible_blades", "a blades section"},
                      where(deck, "structure.rotor.flexible_blades") + ": flexible blades need the `blades` section (their structure)");
-  // The blades' staggered root-load exchange is only conditionally stable on the flexible tower
-  // (its top is light at the tower's second modes; measured in modules/multibody/README.md,
-  // "Flexible tower with MBBT blades"): refused until the exchange is stable by design.
-  if (structure_.tower.flexible && deck.has("blades"))
-    throw InputError({"floating", std::nullopt, "structure.tower.flexible", "a rigid tower with flexible blades, or rigid blades"},
-                     where(deck, "structure.tower.flexible") +
-                         ": a flexible tower with flexible blades is not supported yet (the blades' staggered exchange with the "
-                         "bending tower is only conditionally stable; use the rigid tower, or rigid blades on the flexible tower)");
   const multibody::State initial = multibody::Multibody::make_state(model_);
   dt_s_ = simulation_keys(deck).dt_s;
   sea_.emplace(deck, platform_motion(initial), dt_s_);

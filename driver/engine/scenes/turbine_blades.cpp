@@ -34,6 +34,7 @@ struct BladesKeys : BeamKeys {
   double step_matrix_max_rotation_rad = 0.02;
   double pitch_actuator_frequency_hz = 2.0;
   double pitch_actuator_damping_ratio = 0.7;
+  std::string interface_mass = "auto";
 };
 
 // Each key once: name, schema and the field it fills (decks/deck_section.hpp).
@@ -90,7 +91,14 @@ const DeckSection<BladesKeys>& blades_section() {
                                                 .doc("natural frequency of the second-order pitch actuator"),
              &BladesKeys::pitch_actuator_frequency_hz)
         .key("pitch_actuator_damping_ratio", Schema::number().greater_than(0.0).default_value(0.7).doc("its damping ratio"),
-             &BladesKeys::pitch_actuator_damping_ratio);
+             &BladesKeys::pitch_actuator_damping_ratio)
+        // The interface Jacobian of the exchange (turbine_blades.hpp; modules/multibody/README.md
+        // "Flexible tower with MBBT blades": without it the flexible tower's exchange diverges).
+        .key("interface_mass", Schema::choice({"auto", "on", "off"}).default_value("auto")
+                                   .doc("the multibody takes the blades' apparent mass at the hub (their root-load response "
+                                        "to the hub's acceleration over a large step) implicitly and holds only the remainder; "
+                                        "auto: on with structure.tower.flexible, off on the rigid tower (its results as before)"),
+             &BladesKeys::interface_mass);
     return b;
   }();
   return section;
@@ -169,6 +177,19 @@ TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Mod
   gauges_eta_ = keys.gauges_eta;
   nodal_deflections_ = keys.nodal_deflections;
   start_ = keys.start;
+  interface_mass_ = keys.interface_mass == "on" || (keys.interface_mass == "auto" && model.params.tower.flexible);
+}
+
+void TurbineBlades::refresh_apparent_mass(Data& d, const RotorDemands& demands, double dt_large) {
+  d.apparent_mass_h = rotor_.apparent_mass_h(d.rotor.shaft, d.rotor.state, dt_large, demands);
+}
+
+Vec6 TurbineBlades::shaft_acceleration_h(const Data& d) {
+  const ShaftMotion& sh = d.rotor.shaft;
+  const Mat3 t_gh = sh.orientation * rotation_matrix(Vec3(d.rotor.state.spin.rotor_azimuth_rad, 0.0, 0.0));
+  Vec6 a;
+  a << t_gh.transpose() * sh.apex_acceleration_m_s2, t_gh.transpose() * sh.angular_acceleration_rad_s2;
+  return a;
 }
 
 void TurbineBlades::start(const ShaftMotion& shaft, const multibody::State& state, double pitch_rad,
@@ -183,6 +204,11 @@ void TurbineBlades::add_stage_loads(const multibody::ChainKinematics& chain, con
   const Mat3& t_gh = chain.rotor.orientation;
   out.rotor_force_N += t_gh * d.held.force_h_N;
   out.rotor_moment_N_m += t_gh * d.held.moment_h_N_m;
+  if (!interface_mass_) return;
+  Mat6 turn = Mat6::Zero();
+  turn.topLeftCorner<3, 3>() = t_gh;
+  turn.bottomRightCorner<3, 3>() = t_gh;
+  out.rotor_added_mass += turn * d.apparent_mass_h * turn.transpose();
 }
 
 multibody::SpinMotion TurbineBlades::spin(double t, const Data& d) const {
@@ -210,7 +236,17 @@ void TurbineBlades::use_extrapolated_spin_profile(double t, Data& d) {
 class TurbineBlades::Coupling {
  public:
   using Motion = ShaftMotion;
-  using Load = FlexibleRotor::HubLoad;
+  // A sample of the root loads and of the hub's acceleration the blades saw (averaged alike).
+  struct Load {
+    FlexibleRotor::HubLoad load;
+    Vec6 shaft_acceleration_h = Vec6::Zero();
+    Load& operator+=(const Load& b) {
+      load += b.load;
+      shaft_acceleration_h += b.shaft_acceleration_h;
+      return *this;
+    }
+    friend Load operator*(double w, const Load& a) { return {w * a.load, w * a.shaft_acceleration_h}; }
+  };
   using SlowState = multibody::State;
   Coupling(TurbineBlades& blades, multibody::LoadProvider& provider, const ShaftAt& shaft_at, const RotorDemands& demands,
            multibody::State& state, Data& d, RotorAero::Data* aero)
@@ -234,12 +270,23 @@ class TurbineBlades::Coupling {
   void advance_fast(double t, double dt, const SubstepMotion<ShaftMotion>& slow) {
     b_.rotor_.advance(t, dt, slow, demands_, d_.rotor, aero_);
   }
-  FlexibleRotor::HubLoad root_loads() const { return d_.rotor.last; }
-  void hold(const FlexibleRotor::HubLoad& average, double dt_large) {
+  Load root_loads() const {
+    return {d_.rotor.last, b_.interface_mass_ ? shaft_acceleration_h(d_) : Vec6(Vec6::Zero())};
+  }
+  void hold(const Load& average, double dt_large) {
     const SpinState& after = d_.rotor.state.spin;
     d_.mean_rotor_acceleration_rad_s2 = (after.rotor_speed_rad_s - d_.spin_before.rotor_speed_rad_s) / dt_large;
     d_.mean_generator_acceleration_rad_s2 = (after.generator_speed_rad_s - d_.spin_before.generator_speed_rad_s) / dt_large;
-    d_.held = average;
+    d_.held = average.load;
+    if (!b_.interface_mass_) return;
+    // A blade's step matrix rebuilt within this large step (age ≤ n): its deflection or spin moved on.
+    const int n = b_.substeps_;
+    bool rebuilt = false;
+    for (const beam::BeamState& blade : d_.rotor.state.blades) rebuilt = rebuilt || blade.step_matrix.age <= n;
+    if (rebuilt) b_.refresh_apparent_mass(d_, demands_, dt_large);
+    const Vec6 remainder = d_.apparent_mass_h * average.shaft_acceleration_h;  // R = F̄ + M_h ā
+    d_.held.force_h_N += remainder.head<3>();
+    d_.held.moment_h_N_m += remainder.tail<3>();
   }
   void finish_large_step() { copy_spin(d_, state_); }  // the blades own the spin
 
