@@ -88,11 +88,6 @@ Vec6 rotor_load_on_shaft(FlexibleRotor& rotor, const FlexibleRotor::Data& d0, co
   return sum;
 }
 
-// The one generalized-α step (ρ∞ = 0: w_k/w_m = ½ per h²) whose response matches a large step of
-// n small steps to leading order: a mode of frequency ω takes up ω² ⟨t²⟩/2 of a constant
-// acceleration averaged with the trapezoidal weights, ⟨t²⟩ = ΔT² (1/3 + 1/(6n²)); the step ω² h²/2.
-double matched_step(double dt_large, int n) { return dt_large * std::sqrt(1.0 / 3.0 + 1.0 / (6.0 * n * n)); }
-
 }  // namespace
 
 TEST_CASE("stiff blades' apparent mass is their rigid-body mass about the apex", "[verification][flexible][interface_mass]") {
@@ -137,7 +132,7 @@ TEST_CASE("stiff blades' apparent mass is their rigid-body mass about the apex",
 
 TEST_CASE("the rotor's apparent mass against finite differences of the blades' large step", "[verification][flexible][interface_mass]") {
   // NREL 5MW blades (real and 1000× stiffer), free spin on the flexible drivetrain, 12.1 rpm, gravity,
-  // after ten large steps; the step h of the linearisation matched to leading order (matched_step).
+  // after ten large steps; the step h of the linearisation matched to leading order (apparent_mass_step).
   // What is compared: the diagonal of M_h and of the finite differences of what the multibody's shaft
   // feels (rotor_load_on_shaft, 0.1 m/s² and 2e-3 rad/s²: linear to ≈ 1e-4 here). About the shaft
   // the rotor's apparent inertia is a small difference (the hub and generator follow the shaft in
@@ -153,7 +148,7 @@ TEST_CASE("the rotor's apparent mass against finite differences of the blades' l
         for (int i = 0; i < 4; ++i)
           rotor.advance(k * dt_large + i * dt_large / 4, dt_large / 4, SubstepMotion<ShaftMotion>{shaft, shaft, i, 4}, demands, d,
                         nullptr);
-      const Mat6 m = rotor.apparent_mass_h(shaft, d.state, matched_step(dt_large, 4), demands);
+      const Mat6 m = rotor.apparent_mass_h(shaft, d.state, rotor.apparent_mass_step(dt_large, 4), demands);
       const Mat3 t_gh = rotation_matrix(Vec3(d.state.spin.rotor_azimuth_rad, 0.0, 0.0));
       const Vec6 f0 = rotor_load_on_shaft(rotor, d, shaft, Vec6::Zero(), dt_large, 4, demands);
       Vec6 fd;

@@ -100,6 +100,14 @@ FlexibleRotor::FlexibleRotor(FlexibleRotorParams params, const RotorAero* aero, 
   response_ = std::make_unique<beam::RootResponse>(params_.blade, params_.dynamics.spectral_radius);
 }
 
+double FlexibleRotor::apparent_mass_step(double dt_large, int n) const {
+  const double rho = params_.dynamics.spectral_radius;
+  const double am = (2.0 * rho - 1.0) / (rho + 1.0), af = rho / (rho + 1.0);
+  const double beta = 0.25 * (1.0 - am + af) * (1.0 - am + af);
+  const double w_m = 1.0 - am, w_k = (1.0 - af) * beta;  // w_k per h²
+  return dt_large * std::sqrt((1.0 / 3.0 + 1.0 / (6.0 * n * n)) * w_m / (2.0 * w_k));
+}
+
 Mat6 FlexibleRotor::apparent_mass_h(const ShaftMotion& shaft, const FlexibleRotorState& state, double h,
                                     const RotorDemands& demands) {
   const bool gravity = demands.gravity;

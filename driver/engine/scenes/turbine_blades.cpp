@@ -181,7 +181,8 @@ TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Mod
 }
 
 void TurbineBlades::refresh_apparent_mass(Data& d, const RotorDemands& demands, double dt_large) {
-  d.apparent_mass_h = rotor_.apparent_mass_h(d.rotor.shaft, d.rotor.state, dt_large, demands);
+  d.apparent_mass_h =
+      rotor_.apparent_mass_h(d.rotor.shaft, d.rotor.state, rotor_.apparent_mass_step(dt_large, substeps_), demands);
 }
 
 Vec6 TurbineBlades::shaft_acceleration_h(const Data& d) {
@@ -236,17 +237,7 @@ void TurbineBlades::use_extrapolated_spin_profile(double t, Data& d) {
 class TurbineBlades::Coupling {
  public:
   using Motion = ShaftMotion;
-  // A sample of the root loads and of the hub's acceleration the blades saw (averaged alike).
-  struct Load {
-    FlexibleRotor::HubLoad load;
-    Vec6 shaft_acceleration_h = Vec6::Zero();
-    Load& operator+=(const Load& b) {
-      load += b.load;
-      shaft_acceleration_h += b.shaft_acceleration_h;
-      return *this;
-    }
-    friend Load operator*(double w, const Load& a) { return {w * a.load, w * a.shaft_acceleration_h}; }
-  };
+  using Load = FlexibleRotor::HubLoad;
   using SlowState = multibody::State;
   Coupling(TurbineBlades& blades, multibody::LoadProvider& provider, const ShaftAt& shaft_at, const RotorDemands& demands,
            multibody::State& state, Data& d, RotorAero::Data* aero)
@@ -270,21 +261,24 @@ class TurbineBlades::Coupling {
   void advance_fast(double t, double dt, const SubstepMotion<ShaftMotion>& slow) {
     b_.rotor_.advance(t, dt, slow, demands_, d_.rotor, aero_);
   }
-  Load root_loads() const {
-    return {d_.rotor.last, b_.interface_mass_ ? shaft_acceleration_h(d_) : Vec6(Vec6::Zero())};
-  }
-  void hold(const Load& average, double dt_large) {
+  FlexibleRotor::HubLoad root_loads() const { return d_.rotor.last; }
+  void hold(const FlexibleRotor::HubLoad& average, double dt_large) {
     const SpinState& after = d_.rotor.state.spin;
     d_.mean_rotor_acceleration_rad_s2 = (after.rotor_speed_rad_s - d_.spin_before.rotor_speed_rad_s) / dt_large;
     d_.mean_generator_acceleration_rad_s2 = (after.generator_speed_rad_s - d_.spin_before.generator_speed_rad_s) / dt_large;
-    d_.held = average.load;
-    if (!b_.interface_mass_) return;
+    if (!b_.interface_mass_) {
+      d_.held = average;
+      return;
+    }
     // A blade's step matrix rebuilt within this large step (age ≤ n): its deflection or spin moved on.
-    const int n = b_.substeps_;
     bool rebuilt = false;
-    for (const beam::BeamState& blade : d_.rotor.state.blades) rebuilt = rebuilt || blade.step_matrix.age <= n;
+    for (const beam::BeamState& blade : d_.rotor.state.blades) rebuilt = rebuilt || blade.step_matrix.age <= b_.substeps_;
     if (rebuilt) b_.refresh_apparent_mass(d_, demands_, dt_large);
-    const Vec6 remainder = d_.apparent_mass_h * average.shaft_acceleration_h;  // R = F̄ + M_h ā
+    // The remainder at the step's end, R = F + M_h a (header): free of the shaft's acceleration, so
+    // what averaging buys a load that follows the fast motion matters less here than the lag — the
+    // average is centred ΔT/2 before the next step starts, this sample at its start.
+    const Vec6 remainder = d_.apparent_mass_h * shaft_acceleration_h(d_);
+    d_.held = d_.rotor.last;
     d_.held.force_h_N += remainder.head<3>();
     d_.held.moment_h_N_m += remainder.tail<3>();
   }

@@ -8,28 +8,29 @@
 //     the hub frame h and turned with the hub at every RK stage, and with the rotor spin
 //     prescribed: extrapolated from the fast side's spin at T with its mean acceleration over the
 //     previous large step (the multibody never integrates the spin: DESIGN.md §4). With the
-//     interface mass (below) the held part is only the remainder R = F̄ + M_h ā and the blades'
-//     apparent mass M_h is in the multibody's equations: root load = R − M_h [a_apex; α_s];
+//     interface mass (below) the held part is only the remainder R and the rotor's apparent mass
+//     M_h is in the multibody's equations: root load = R − M_h [a_apex; α_s];
 //  2. the fast side takes n small steps through the shaft motion interpolated between T and
-//     T + ΔT; the scheduler averages its root loads F̄ (and the shaft acceleration ā the blades saw)
-//     over the step (trapezoidal weights);
+//     T + ΔT; the scheduler averages its root loads over the step (trapezoidal weights);
 //  3. predictor_corrector: the multibody redoes the step from T with the new average and the
 //     spin the fast side computed; single_rate: n = 1;
 //  4. the multibody's spin is set to the fast side's at T + ΔT.
 // Platform translation and tilt carry the light blades on a heavy body: staggered, as the seed.
 //
 // Interface mass (issue 24; `blades.interface_mass`, on with the flexible tower). Exchanging the
-// whole root load explicitly is an added-mass partition: its inertial part −M a lags one large
-// step, which is unstable when the blades are heavy against what they hang on at the frequency
-// that matters (the flexible tower's top at its second modes: modules/multibody/README.md). The
-// blades' root load is affine in the hub's acceleration over a step, F ≈ F_0 − M_h a (FlexibleRotor::
-// apparent_mass_h, from each blade's linearised generalized-α step of ΔT: their dynamic stiffness
-// at the time scale of the multibody's step, rigid where their modes are fast against ΔT, light
-// where they are slow). The multibody takes M_h on its left-hand side at every stage
-// (multibody::AppliedLoads::rotor_added_mass) and only R = F̄ + M_h ā, which no longer depends on
-// the hub's acceleration to first order, is held explicitly. M_h is refreshed after a large step
-// in which a blade's step matrix was rebuilt (the same ageing: the blades' deflection and spin;
-// the first large step builds it, and is exchanged explicitly as before).
+// whole root load explicitly is an added-mass partition: its inertial part −M a lags a large step,
+// which is unstable when the blades are heavy against what they hang on at the frequency that
+// matters (the flexible tower's top at its second modes: modules/multibody/README.md). The rotor's
+// load on the shaft is affine in the shaft's acceleration over a step, F ≈ F_0 − M_h [a_apex; α_s]
+// (FlexibleRotor::apparent_mass_h: each blade's linearised generalized-α step — their dynamic
+// stiffness at the time scale of the large step, rigid where their modes are fast against ΔT,
+// light where they are slow — with the free spin condensed out). The multibody takes M_h on its
+// left-hand side at every stage (multibody::AppliedLoads::rotor_added_mass) and holds only the
+// remainder R = F(T) + M_h a(T), taken at the step's end (not averaged: R no longer follows the
+// shaft's acceleration, and the sample lags half as much as the average; with the average the
+// 1000×-stiff blades' roll–drivetrain oscillation at 4.2 Hz grew, with the sample it decays).
+// M_h is refreshed after a large step in which a blade's step matrix was rebuilt (the same ageing:
+// the blades' deflection and spin; the first large step builds it and is exchanged as before).
 #include <functional>
 #include <optional>
 #include <span>
