@@ -119,6 +119,7 @@ class FloatingScene {
   // the generalised forces vanish, f_e(q_e) = 0, with every speed zero and the rigid coordinates
   // where they are (gravity, the sea and the aerodynamics of that state), by Newton's method on a
   // central-difference Jacobian. NumericalError if it does not converge in 20 iterations.
+  // InputError with the flexible blades (their states are not in x).
   void settle_elastic(double t, FloatingState& s);
   // The multibody DOFs (model.hpp Dof indices) the linearisation's coordinates are, in order: the
   // model's DOFs less the held ones.
@@ -130,6 +131,7 @@ class FloatingScene {
   const TurbineRiser* riser() const { return riser_ ? &*riser_ : nullptr; }
 
  private:
+  void refuse_flexible_blades_in_modes() const;  // InputError: their states are not linearised
   class StageLoads;
   ShaftMotion shaft_at(double t, const multibody::State& body);
   // The equations of motion at `body` (into evaluation_) under the stage loads of `work`, a copy of
