@@ -95,9 +95,10 @@ const DeckSection<BladesKeys>& blades_section() {
         // The interface Jacobian of the exchange (turbine_blades.hpp; modules/multibody/README.md
         // "Flexible tower with MBBT blades": without it the flexible tower's exchange diverges).
         .key("interface_mass", Schema::choice({"auto", "on", "off"}).default_value("auto")
-                                   .doc("the multibody takes the blades' apparent mass at the hub (their root-load response "
-                                        "to the hub's acceleration over a large step) implicitly and holds only the remainder; "
-                                        "auto: on with structure.tower.flexible, off on the rigid tower (its results as before)"),
+                                   .doc("the multibody takes the rotor's apparent mass on the shaft (the blades' root-load "
+                                        "response to the shaft's acceleration over a large step, the free spin condensed out) "
+                                        "implicitly and holds only the remainder at the step's end; auto: on with "
+                                        "structure.tower.flexible, off on the rigid tower (its results as before)"),
              &BladesKeys::interface_mass);
     return b;
   }();
