@@ -108,25 +108,32 @@ double FlexibleRotor::apparent_mass_step(double dt_large, int n) const {
   return dt_large * std::sqrt((1.0 / 3.0 + 1.0 / (6.0 * n * n)) * w_m / (2.0 * w_k));
 }
 
+Mat6 FlexibleRotor::blade_apparent_mass_h(const ShaftMotion& shaft, const FlexibleRotorState& state, double h, int blade,
+                                          bool gravity) {
+  const Mat3 t_gh = shaft.orientation * rotation_matrix(Vec3(state.spin.rotor_azimuth_rad, 0.0, 0.0));
+  const BladeFrame f = frame(shaft, blade, state);
+  response_input_.frame = in_f(f, gravity ? params_.gravity_m_s2 : 0.0);
+  const Mat6 per_unit = response_->compute(response_input_, h, state.blades[blade]);
+  const Mat3 t_fh = f.orientation.transpose() * t_gh;
+  const Vec3 arm_h = t_gh.transpose() * f.arm_m;
+  Mat3 cross;
+  cross << 0.0, -arm_h.z(), arm_h.y(), arm_h.z(), 0.0, -arm_h.x(), -arm_h.y(), arm_h.x(), 0.0;
+  Mat6 x = Mat6::Zero();
+  x.topLeftCorner<3, 3>() = t_fh;
+  x.topRightCorner<3, 3>() = -t_fh * cross;
+  x.bottomRightCorner<3, 3>() = t_fh;
+  return -(x.transpose() * per_unit * x);
+}
+
 Mat6 FlexibleRotor::apparent_mass_h(const ShaftMotion& shaft, const FlexibleRotorState& state, double h,
                                     const RotorDemands& demands) {
-  const bool gravity = demands.gravity;
-  const Mat3 t_gh = shaft.orientation * rotation_matrix(Vec3(state.spin.rotor_azimuth_rad, 0.0, 0.0));
-  Mat6 mass = Mat6::Zero();
-  for (int b = 0; b < kBlades; ++b) {
-    const BladeFrame f = frame(shaft, b, state);
-    response_input_.frame = in_f(f, gravity ? params_.gravity_m_s2 : 0.0);
-    const Mat6 per_unit = response_->compute(response_input_, h, state.blades[b]);
-    const Mat3 t_fh = f.orientation.transpose() * t_gh;
-    const Vec3 arm_h = t_gh.transpose() * f.arm_m;
-    Mat3 cross;
-    cross << 0.0, -arm_h.z(), arm_h.y(), arm_h.z(), 0.0, -arm_h.x(), -arm_h.y(), arm_h.x(), 0.0;
-    Mat6 x = Mat6::Zero();
-    x.topLeftCorner<3, 3>() = t_fh;
-    x.topRightCorner<3, 3>() = -t_fh * cross;
-    x.bottomRightCorner<3, 3>() = t_fh;
-    mass.noalias() -= x.transpose() * per_unit * x;
-  }
+  Mat6 blades = Mat6::Zero();
+  for (int b = 0; b < kBlades; ++b) blades += blade_apparent_mass_h(shaft, state, h, b, demands.gravity);
+  return with_spin_condensed(blades, h, demands);
+}
+
+Mat6 FlexibleRotor::with_spin_condensed(const Mat6& blades, double h, const RotorDemands& demands) const {
+  Mat6 mass = blades;
   // The spin condensed out (header): e is x_h, index 3 of [a; α]; M = M_b − Bᵀ K⁻¹ B.
   if (params_.spin == SpinMode::free) {
     const double rho = params_.dynamics.spectral_radius;

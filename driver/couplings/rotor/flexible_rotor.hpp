@@ -184,6 +184,10 @@ class FlexibleRotor {
   // The blades' node loads are left out of the linearisation (their follower arm adds a stiffness
   // of the aero load's order, not an inertia): what is left out is exchanged with the remainder.
   Mat6 apparent_mass_h(const ShaftMotion& shaft, const FlexibleRotorState& state, double h, const RotorDemands& demands);
+  // Its two parts, so that a blade's share is refreshed alone: blade b's −X_bᵀ P_b X_b, and the sum of
+  // the blades' with the spin condensed out.
+  Mat6 blade_apparent_mass_h(const ShaftMotion& shaft, const FlexibleRotorState& state, double h, int blade, bool gravity);
+  Mat6 with_spin_condensed(const Mat6& blades, double h, const RotorDemands& demands) const;
   // The step h that stands for a large step of dt_large in n small steps: the blades see a shaft
   // acceleration that changes at the step's start, and what the multibody gets is their load over
   // the step, so a mode of frequency ω takes up ω² ⟨t²⟩/2 of it to leading order, ⟨t²⟩ = ΔT² (1/3 +

@@ -182,8 +182,17 @@ TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Mod
 }
 
 void TurbineBlades::refresh_apparent_mass(Data& d, const RotorDemands& demands, double dt_large) {
-  d.apparent_mass_h =
-      rotor_.apparent_mass_h(d.rotor.shaft, d.rotor.state, rotor_.apparent_mass_step(dt_large, substeps_), demands);
+  const double h = rotor_.apparent_mass_step(dt_large, substeps_);
+  bool refreshed = false;
+  for (int b = 0; b < kBlades; ++b) {
+    if (d.rotor.state.blades[b].step_matrix.age > substeps_) continue;  // not rebuilt within this large step
+    d.blade_apparent_mass_h[b] = rotor_.blade_apparent_mass_h(d.rotor.shaft, d.rotor.state, h, b, demands.gravity);
+    refreshed = true;
+  }
+  if (!refreshed) return;
+  Mat6 blades = Mat6::Zero();
+  for (const Mat6& m : d.blade_apparent_mass_h) blades += m;
+  d.apparent_mass_h = rotor_.with_spin_condensed(blades, h, demands);
 }
 
 Vec6 TurbineBlades::shaft_acceleration_h(const Data& d) {
@@ -271,10 +280,7 @@ class TurbineBlades::Coupling {
       d_.held = average;
       return;
     }
-    // A blade's step matrix rebuilt within this large step (age ≤ n): its deflection or spin moved on.
-    bool rebuilt = false;
-    for (const beam::BeamState& blade : d_.rotor.state.blades) rebuilt = rebuilt || blade.step_matrix.age <= b_.substeps_;
-    if (rebuilt) b_.refresh_apparent_mass(d_, demands_, dt_large);
+    b_.refresh_apparent_mass(d_, demands_, dt_large);
     // The remainder at the step's end, R = F + M_h a (header): free of the shaft's acceleration, so
     // what averaging buys a load that follows the fast motion matters less here than the lag — the
     // average is centred ΔT/2 before the next step starts, this sample at its start.

@@ -29,8 +29,10 @@
 // remainder R = F(T) + M_h a(T), taken at the step's end (not averaged: R no longer follows the
 // shaft's acceleration, and the sample lags half as much as the average; with the average the
 // 1000×-stiff blades' roll–drivetrain oscillation at 4.2 Hz grew, with the sample it decays).
-// M_h is refreshed after a large step in which a blade's step matrix was rebuilt (the same ageing:
-// the blades' deflection and spin; the first large step builds it and is exchanged as before).
+// A blade's share of M_h is refreshed after a large step in which its step matrix was rebuilt (the
+// same ageing: its deflection and spin; the first large step builds them all and is exchanged as
+// before), then the spin is condensed out of their sum again.
+#include <array>
 #include <functional>
 #include <optional>
 #include <span>
@@ -73,14 +75,19 @@ class TurbineBlades {
     FlexibleRotor::Data rotor;
     FlexibleRotor::HubLoad held;    // root loads averaged over the last large step (their remainder R
                                     // with the interface mass), hub frame h, force at / moment about the apex
-    Mat6 apparent_mass_h = Mat6::Zero();  // M_h: the blades' apparent mass at the apex in h (zero without
-                                          // the interface mass) [kg, kg·m, kg·m²]
+    std::array<Mat6, kBlades> blade_apparent_mass_h{};  // each blade's share of M_b (spin held), h, apex
+    Mat6 apparent_mass_h = Mat6::Zero();  // M_h: the rotor's apparent mass on the shaft at the apex in h, the
+                                          // spin condensed out (zero without the interface mass) [kg, kg·m, kg·m²]
     SpinState spin_before;          // fast spin at the start of the last large step
     SpinProfile profile;
     double mean_rotor_acceleration_rad_s2 = 0.0;      // over the last large step
     double mean_generator_acceleration_rad_s2 = 0.0;
   };
-  Data make_data() const { return {rotor_.make_data(), {}, Mat6::Zero(), {}, {}, 0.0, 0.0}; }
+  Data make_data() const {
+    Data d{rotor_.make_data(), {}, {}, Mat6::Zero(), {}, {}, 0.0, 0.0};
+    for (Mat6& m : d.blade_apparent_mass_h) m.setZero();
+    return d;
+  }
 
   CouplingMode mode() const { return mode_; }
   int substeps() const { return substeps_; }
@@ -115,6 +122,7 @@ class TurbineBlades {
 
  private:
   class Coupling;  // this turbine as a MultiRateCoupling
+  // M_h after the large step of dt_large: the shares of the blades whose step matrix was rebuilt in it.
   void refresh_apparent_mass(Data& d, const RotorDemands& demands, double dt_large);
   static void use_step_spin_profile(double t, Data& d);          // the spin the blades took over the step from t
   static void use_extrapolated_spin_profile(double t, Data& d);  // from the blades' spin at t, last step's mean acceleration
@@ -141,7 +149,7 @@ void fields(Archive& a, TurbineBlades::SpinProfile& p) {
 }
 template <class Archive>
 void fields(Archive& a, TurbineBlades::Data& d) {
-  a.io(d.rotor, d.held, d.apparent_mass_h, d.spin_before, d.profile, d.mean_rotor_acceleration_rad_s2,
+  a.io(d.rotor, d.held, d.blade_apparent_mass_h, d.apparent_mass_h, d.spin_before, d.profile, d.mean_rotor_acceleration_rad_s2,
        d.mean_generator_acceleration_rad_s2);
 }
 
