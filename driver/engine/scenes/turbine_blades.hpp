@@ -73,8 +73,8 @@ class TurbineBlades {
   // step and the spin handed to the multibody.
   struct Data {
     FlexibleRotor::Data rotor;
-    FlexibleRotor::HubLoad held;    // root loads averaged over the last large step (their remainder R
-                                    // with the interface mass), hub frame h, force at / moment about the apex
+    FlexibleRotor::HubLoad held;    // root loads averaged over the last large step (with the interface mass:
+                                    // the remainder R at its end), hub frame h, force at / moment about the apex
     std::array<Mat6, kBlades> blade_apparent_mass_h{};  // each blade's share of M_b (spin held), h, apex
     Mat6 apparent_mass_h = Mat6::Zero();  // M_h: the rotor's apparent mass on the shaft at the apex in h, the
                                           // spin condensed out (zero without the interface mass) [kg, kg·m, kg·m²]
