@@ -234,11 +234,15 @@ multibody::SpinMotion TurbineBlades::spin(double t, const Data& d) const {
   return m;
 }
 
-void TurbineBlades::use_extrapolated_spin_profile(double t, Data& d) {
+void TurbineBlades::use_extrapolated_spin_profile(double t, Data& d) const {
   const SpinState& s = d.rotor.state.spin;
+  // With the interface mass the hub's and generator's spin accelerations are taken where the held
+  // remainder is, at the step's end (their last small step), not centred ΔT/2 before it: M_h
+  // linearises both about the same instant.
+  const double rotor = interface_mass_ ? s.rotor_mean_acceleration_rad_s2 : d.mean_rotor_acceleration_rad_s2;
+  const double generator = interface_mass_ ? s.generator_mean_acceleration_rad_s2 : d.mean_generator_acceleration_rad_s2;
   d.profile.t0 = t;
-  d.profile.at_t0 = {s.rotor_azimuth_rad, s.rotor_speed_rad_s, d.mean_rotor_acceleration_rad_s2,
-                     s.generator_azimuth_rad, s.generator_speed_rad_s, d.mean_generator_acceleration_rad_s2};
+  d.profile.at_t0 = {s.rotor_azimuth_rad, s.rotor_speed_rad_s, rotor, s.generator_azimuth_rad, s.generator_speed_rad_s, generator};
 }
 
 // The turbine as a pair for multi_rate_step: the multibody (slow) and the blades with the spin
@@ -260,7 +264,7 @@ class TurbineBlades::Coupling {
   // average and the spin the blades took over the step.
   void advance_slow(double t, double dt, SlowPass pass) {
     if (pass == SlowPass::predictor) {
-      use_extrapolated_spin_profile(t, d_);
+      b_.use_extrapolated_spin_profile(t, d_);
       d_.spin_before = d_.rotor.state.spin;
     } else {
       use_step_spin_profile(t, d_);

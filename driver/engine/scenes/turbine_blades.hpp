@@ -125,7 +125,7 @@ class TurbineBlades {
   // M_h after the large step of dt_large: the shares of the blades whose step matrix was rebuilt in it.
   void refresh_apparent_mass(Data& d, const RotorDemands& demands, double dt_large);
   static void use_step_spin_profile(double t, Data& d);          // the spin the blades took over the step from t
-  static void use_extrapolated_spin_profile(double t, Data& d);  // from the blades' spin at t, last step's mean acceleration
+  void use_extrapolated_spin_profile(double t, Data& d) const;  // from the blades' spin at t, last step's mean acceleration
   static void copy_spin(const Data& d, multibody::State& state);
   // The shaft's acceleration the blades see now, [a_apex; α_s] in h.
   static Vec6 shaft_acceleration_h(const Data& d);
