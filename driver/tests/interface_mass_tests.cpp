@@ -215,11 +215,13 @@ TEST_CASE("blades 1000x stiffer on the flexible tower reproduce the rigid-blade 
   // earlier figure with a rigid stand-in was ≤ 1.5e-3 for the platform). What separates the models:
   // the staggered exchange's remainder (first order in ΔT), the blades' residual flexibility (22 Hz
   // flap, which the tower-top motion excites) and the sections' rotary inertia the line mass omits.
-  // Measured (ΔT 20 ms): see the INFO lines; bounds ≈ 3–5× those.
+  // Measured (ΔT 20 ms): RotSpeed 2.0e-2 (its 4.2 Hz roll–drivetrain content: the rigid-blade model
+  // spins the rotor in the multibody), PtfmSurge 2.1e-3, PtfmPitch 1.8e-3, TTDspFA 7.3e-3; bounds
+  // ≈ 5–7× those.
   const struct {
     const char* name;
     double bound;
-  } checks[] = {{"RotSpeed", 0.1}, {"PtfmSurge", 5e-3}, {"PtfmPitch", 5e-3}, {"TTDspFA", 0.03}};
+  } checks[] = {{"RotSpeed", 0.1}, {"PtfmSurge", 1e-2}, {"PtfmPitch", 1e-2}, {"TTDspFA", 0.05}};
   for (const auto& c : checks) {
     double range = 0.0;
     const double diff = largest_difference(rigid, stiff, c.name, range);
