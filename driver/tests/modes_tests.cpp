@@ -97,11 +97,13 @@ TEST_CASE("modes with the flexible tower: tower coordinates, tower modes near 0.
   for (const StructuralMode& m : r.modes) CHECK(m.damping_ratio >= -1e-6);
 }
 
-TEST_CASE("a flexible tower with flexible blades stops at its deck line (their staggered exchange is only conditionally stable there)", "[unit][modes]") {
+TEST_CASE("modes of MBBT blades on the flexible tower stop at the blades (their states are not linearised)", "[unit][modes]") {
+  // The flexible tower takes the MBBT blades (their interface mass, scenes/turbine_blades.hpp); the
+  // linearisation still has no blade states, and says so instead of giving rigid-blade modes.
   const auto dir = testing::scratch_dir("flexible_tower_blades");
   std::ofstream(dir / "deck.yaml") << "include: [" << (testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml").string()
                                    << "]\nstructure: {tower: {flexible: true}}\n";
-  CHECK_THROWS_WITH(floating_modes(dir / "deck.yaml"), Catch::Contains("deck.yaml:2") && Catch::Contains("structure.tower.flexible"));
+  CHECK_THROWS_WITH(floating_modes(dir / "deck.yaml"), Catch::Contains("not linearised yet"));
 }
 
 TEST_CASE("modes with Rayleigh-Ritz blades on the land-based tower: 38060 Table 9-1", "[verification][modes][rr_blades]") {

@@ -54,6 +54,12 @@ TEST_CASE("a restart continues the flexible-blade turbine bit-identically", "[ve
   check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml", "", "flexible");
 }
 
+TEST_CASE("a restart continues MBBT blades on the flexible tower bit-identically (their apparent mass in the state)",
+          "[verification][run][interface_mass]") {
+  check_restart(testing::source_dir() / "inputs/oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml",
+                "structure: {tower: {flexible: true}}\n", "flexible_tower_blades");
+}
+
 TEST_CASE("a restart continues the turbine with unsteady airfoils and dynamic inflow bit-identically", "[verification][run]") {
   // Rigid blades (states advanced once per large step) and flexible blades (at the small step).
   const std::string on = "aero: {unsteady_airfoil: hgm, dynamic_inflow: oye}\n";

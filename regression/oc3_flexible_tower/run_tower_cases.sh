@@ -3,18 +3,19 @@
 # 600 s with OpenFAST's TurbSim file and its sea replayed from Wave1Elev, WAMIT potential flow,
 # unsteady airfoils and the tower's aerodynamics (as regression/oc3_potential_flow's wamit_ua_tower
 # case); rigid and Rayleigh–Ritz blades (ElastoDyn's blade file), each on the rigid and on the
-# flexible tower (a gauge at ElastoDyn's TwrGagNd 10: 36.86 m). Two runs at a time (≈ 10 s each with
-# rigid blades, ≈ 30 s with Rayleigh–Ritz blades), then compare_tower.py.
+# flexible tower (a gauge at ElastoDyn's TwrGagNd 10: 36.86 m); and the MBBT blades (23 volumes) on the
+# flexible tower (its interface mass, modules/multibody/README.md; ≈ 12 s). Two runs at a time (≈ 10 s
+# each with rigid blades, ≈ 30 s with Rayleigh–Ritz blades), then compare_tower.py.
 # Usage: run_tower_cases.sh FOWTSIM OUTDIR.
 set -euo pipefail
 fowtsim=$1
 out=$2
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../oc3_openfast_run.sh"
-write_deck() {  # name tower-keys rotor-keys
+write_deck() {  # name tower-keys rotor-keys [extra include]
   cat > "$out/$1.yaml" <<DECK
 include: [$inputs/oc3_hywind/structure.yaml, $inputs/oc3_hywind/hydro_potential_flow.yaml, $inputs/oc3_hywind/mooring.yaml,
-          $inputs/oc3_hywind/controller.yaml, $inputs/oc3_hywind/aero_oc3.yaml]
+          $inputs/oc3_hywind/controller.yaml, $inputs/oc3_hywind/aero_oc3.yaml${4:+, $4}]
 simulation: {t_max_s: 600.0, dt_s: 0.02}
 output: {format: out, decimation: 4}
 structure: {initial_conditions: {rotor_speed_rpm: 12.1}, tower: $2, rotor: $3}
@@ -28,15 +29,17 @@ write_deck rigid_tower "{flexible: false}" "{}"
 write_deck flexible_tower "{flexible: true, gauge_heights_m: [36.86]}" "{}"
 write_deck rr_rigid_tower "{flexible: false}" "$rr"
 write_deck rr_flexible_tower "{flexible: true, gauge_heights_m: [36.86]}" "$rr"
-for pair in "rigid_tower flexible_tower" "rr_rigid_tower rr_flexible_tower"; do
+write_deck mbbt_flexible_tower "{flexible: true, gauge_heights_m: [36.86]}" "{}" "$inputs/nrel5mw/blade_structure.yaml"
+echo "blades: {segments: 23, coupling: multi_rate, substeps: 4, start: static}" >> "$out/mbbt_flexible_tower.yaml"
+for pair in "rigid_tower flexible_tower" "rr_rigid_tower rr_flexible_tower" "mbbt_flexible_tower"; do
   set -- $pair
   "$fowtsim" run "$out/$1.yaml" -o "$out/$1" > "$out/$1.log" 2>&1 &
   first=$!
-  "$fowtsim" run "$out/$2.yaml" -o "$out/$2" > "$out/$2.log" 2>&1
+  if [ $# -gt 1 ]; then "$fowtsim" run "$out/$2.yaml" -o "$out/$2" > "$out/$2.log" 2>&1; fi
   wait "$first"
 done
-for case in rigid_tower flexible_tower rr_rigid_tower rr_flexible_tower; do
+for case in rigid_tower flexible_tower rr_rigid_tower rr_flexible_tower mbbt_flexible_tower; do
   echo "$case: $(grep -h "real-time" "$out/$case.log" || true)"
 done
 /usr/bin/python3 "$here/compare_tower.py" "$reference" "$out/rigid_tower.out" "$out/flexible_tower.out" \
-  "$out/rr_rigid_tower.out" "$out/rr_flexible_tower.out"
+  "$out/rr_rigid_tower.out" "$out/rr_flexible_tower.out" "$out/mbbt_flexible_tower.out"

@@ -97,6 +97,74 @@ FlexibleRotor::FlexibleRotor(FlexibleRotorParams params, const RotorAero* aero, 
     aero_loads_[b].assign(static_cast<std::size_t>(params_.blade.node_count()), Vec6::Zero());
     inputs_[b].node_loads.assign(static_cast<std::size_t>(params_.blade.node_count()), Vec6::Zero());
   }
+  response_ = std::make_unique<beam::RootResponse>(params_.blade, params_.dynamics.spectral_radius);
+}
+
+double FlexibleRotor::apparent_mass_step(double dt_large, int n) const {
+  const double rho = params_.dynamics.spectral_radius;
+  const double am = (2.0 * rho - 1.0) / (rho + 1.0), af = rho / (rho + 1.0);
+  const double beta = 0.25 * (1.0 - am + af) * (1.0 - am + af);
+  const double w_m = 1.0 - am, w_k = (1.0 - af) * beta;  // w_k per h²
+  return dt_large * std::sqrt((1.0 / 3.0 + 1.0 / (6.0 * n * n)) * w_m / (2.0 * w_k));
+}
+
+Mat6 FlexibleRotor::blade_apparent_mass_h(const ShaftMotion& shaft, const FlexibleRotorState& state, double h, int blade,
+                                          bool gravity) {
+  const Mat3 t_gh = shaft.orientation * rotation_matrix(Vec3(state.spin.rotor_azimuth_rad, 0.0, 0.0));
+  const BladeFrame f = frame(shaft, blade, state);
+  response_input_.frame = in_f(f, gravity ? params_.gravity_m_s2 : 0.0);
+  const Mat6 per_unit = response_->compute(response_input_, h, state.blades[blade]);
+  const Mat3 t_fh = f.orientation.transpose() * t_gh;
+  const Vec3 arm_h = t_gh.transpose() * f.arm_m;
+  Mat3 cross;
+  cross << 0.0, -arm_h.z(), arm_h.y(), arm_h.z(), 0.0, -arm_h.x(), -arm_h.y(), arm_h.x(), 0.0;
+  Mat6 x = Mat6::Zero();
+  x.topLeftCorner<3, 3>() = t_fh;
+  x.topRightCorner<3, 3>() = -t_fh * cross;
+  x.bottomRightCorner<3, 3>() = t_fh;
+  return -(x.transpose() * per_unit * x);
+}
+
+Mat6 FlexibleRotor::apparent_mass_h(const ShaftMotion& shaft, const FlexibleRotorState& state, double h,
+                                    const RotorDemands& demands) {
+  Mat6 blades = Mat6::Zero();
+  for (int b = 0; b < kBlades; ++b) blades += blade_apparent_mass_h(shaft, state, h, b, demands.gravity);
+  return with_spin_condensed(blades, h, demands);
+}
+
+Mat6 FlexibleRotor::with_spin_condensed(const Mat6& blades, double h, const RotorDemands& demands) const {
+  Mat6 mass = blades;
+  // The spin condensed out (header): e is x_h, index 3 of [a; α]; M = M_b − Bᵀ K⁻¹ B.
+  if (params_.spin == SpinMode::free) {
+    const double rho = params_.dynamics.spectral_radius;
+    const double am = (2.0 * rho - 1.0) / (rho + 1.0), af = rho / (rho + 1.0);
+    const double gamma = 0.5 - am + af, beta = 0.25 * (1.0 - am + af) * (1.0 - am + af);
+    const double n = params_.gearbox_ratio, j_h = params_.hub_inertia_kg_m2, j_gen = params_.generator_inertia_kg_m2;
+    Vec6 b_rotor = mass.col(3), b_generator = Vec6::Zero();
+    b_rotor[3] += j_h;
+    b_generator[3] = n * j_gen;
+    const double j_rotor = j_h + mass(3, 3), j_generator = n * n * j_gen;
+    if (!params_.torsional_flexibility) {  // ψ̈ = θ̈: one row, the sum; a brake holds both
+      if (!demands.drivetrain_locked) {
+        const Vec6 w = b_rotor + b_generator;
+        mass -= w * w.transpose() / (j_rotor + j_generator);
+      }
+    } else {
+      const double kappa = (1.0 - af) *
+                           (params_.torsional_stiffness_N_m_rad * beta * h * h + params_.torsional_damping_N_m_s_rad * gamma * h) /
+                           (1.0 - am);
+      if (demands.drivetrain_locked) {  // θ̈ = 0: the rotor's row alone
+        mass -= b_rotor * b_rotor.transpose() / (j_rotor + kappa);
+      } else {
+        Eigen::Matrix2d k;
+        k << j_rotor + kappa, -kappa, -kappa, j_generator + kappa;
+        Eigen::Matrix<double, 2, 6> b;
+        b << b_rotor.transpose(), b_generator.transpose();
+        mass -= b.transpose() * k.inverse() * b;
+      }
+    }
+  }
+  return 0.5 * (mass + mass.transpose());
 }
 
 FlexibleRotor::Data FlexibleRotor::make_data() const {

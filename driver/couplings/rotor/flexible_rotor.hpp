@@ -25,6 +25,7 @@
 #include "fowtsim/beam/beam_model.hpp"
 #include "fowtsim/beam/beam_outputs.hpp"
 #include "fowtsim/beam/beam_state.hpp"
+#include "fowtsim/beam/root_response.hpp"
 #include "fowtsim/beam/solvers.hpp"
 #include "fowtsim/multibody/kinematics.hpp"
 #include "fowtsim/multibody/model.hpp"
@@ -159,6 +160,44 @@ class FlexibleRotor {
   void advance(double t, double dt, const SubstepMotion<ShaftMotion>& slow, const RotorDemands& demands, Data& d,
                RotorAero::Data* aero);
 
+  // The rotor's apparent mass on the shaft over a step of h (the interface Jacobian of the staggered
+  // exchange, scenes/turbine_blades.hpp): M with the three blades' root load on the hub
+  // ≈ F_0 − M [a_apex; α_s] (force at the apex and moment about it; the apex's and the
+  // non-rotating shaft's accelerations; all in h), the spin free as this side solves it.
+  //  * Blades, the hub's spin held: from each blade's linearised generalized-α step of h from
+  //    `state` (beam::RootResponse, P_b per unit of its root frame's acceleration) with the root
+  //    frame's rigid-body map X_b (h → f):
+  //      M_b = −Σ_b X_bᵀ P_b X_b,  X_b = [T_fh  −T_fh [ρ_b]×; 0  T_fh],  ρ_b the root from the apex in h;
+  //  * the spin condensed out: the hub turns at α = α_s + ψ̈ e, and ψ̈ (with θ̈ of the generator) is
+  //    what the balances of step() give for a shaft acceleration y = [a_apex; α_s] — per unit of
+  //    physical acceleration, with the shaft spring and damper as the step's κ = (1−αf)(kβh² + cγh)/(1−αm):
+  //      K [ψ̈; θ̈] = −B y,  K = [J_h + M_ee + κ   −κ; −κ   N²J_g + κ],  B = [M_e·+ J_h eᵀ; N J_g eᵀ]
+  //    (rigid shaft ψ̈ = θ̈: the two rows summed; a brake holding the generator: θ̈ = 0). The blades'
+  //    load changes by −M_b e ψ̈, and the hub's and generator's inertia, which the multibody takes at
+  //    the prescribed ψ̈, θ̈ of the last step, by −(J_h ψ̈ + N J_g θ̈) e about the shaft, so
+  //      M = M_b − Bᵀ K⁻¹ B,
+  //    the Schur complement: a free rotor lends the shaft only the part of its spin inertia the
+  //    generator drags along (without it, the tower's second side-side mode, which turns the top
+  //    about the shaft at 4.2 Hz, would be loaded with the blades' whole spin inertia and lag it).
+  // Returned symmetrised (the gyroscopic part of the blades' step, small, stays in the explicit
+  // remainder; the multibody's Cholesky needs a symmetric mass).
+  // The blades' node loads are left out of the linearisation (their follower arm adds a stiffness
+  // of the aero load's order, not an inertia): what is left out is exchanged with the remainder.
+  Mat6 apparent_mass_h(const ShaftMotion& shaft, const FlexibleRotorState& state, double h, const RotorDemands& demands);
+  // Its two parts, so that a blade's share is refreshed alone: blade b's −X_bᵀ P_b X_b, and the sum of
+  // the blades' with the spin condensed out.
+  Mat6 blade_apparent_mass_h(const ShaftMotion& shaft, const FlexibleRotorState& state, double h, int blade, bool gravity);
+  Mat6 with_spin_condensed(const Mat6& blades, double h, const RotorDemands& demands) const;
+  // The step h that stands for a large step of dt_large in n small steps: the blades see a shaft
+  // acceleration that changes at the step's start, and what the multibody gets is their load over
+  // the step, so a mode of frequency ω takes up ω² ⟨t²⟩/2 of it to leading order, ⟨t²⟩ = ΔT² (1/3 +
+  // 1/(6n²)) with the scheduler's trapezoidal weights; one generalized-α step of h takes up
+  // (w_k/w_m) ω² h² (w: the step matrix's weights). Equal for
+  //   h = ΔT √((1/3 + 1/(6n²)) w_m / (2 w_k))     (ρ∞ = 0, n = 4: 0.586 ΔT).
+  // Measured against finite differences of the blades' large step (interface_mass_tests.cpp): the
+  // diagonal within 12 %; h = ΔT makes the real blades' tilt and yaw inertia 1.9× too heavy.
+  double apparent_mass_step(double dt_large, int n) const;
+
   const FlexibleRotorParams& params() const { return params_; }
   // Motion of blade i's pitched root frame for the shaft motion and the spin and pitch of `state`.
   BladeFrame frame(const ShaftMotion& shaft, int blade, const FlexibleRotorState& state) const;
@@ -180,6 +219,8 @@ class FlexibleRotor {
   std::array<std::unique_ptr<beam::DynamicStepper>, kBlades> steppers_;
   std::array<beam::BeamInput, kBlades> inputs_;
   std::array<std::vector<Vec6>, kBlades> aero_loads_;
+  std::unique_ptr<beam::RootResponse> response_;  // workspace of apparent_mass_h
+  beam::BeamInput response_input_;
 };
 
 // Field lists (core/fields.hpp).

@@ -165,14 +165,6 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   if (structure_.rotor.flexible_blades && !deck.has("blades"))
     throw InputError({"floating", std::nullopt, "structure.rotor.flexible_blades", "a blades section"},
                      where(deck, "structure.rotor.flexible_blades") + ": flexible blades need the `blades` section (their structure)");
-  // The blades' staggered root-load exchange is only conditionally stable on the flexible tower
-  // (its top is light at the tower's second modes; measured in modules/multibody/README.md,
-  // "Flexible tower with MBBT blades"): refused until the exchange is stable by design.
-  if (structure_.tower.flexible && deck.has("blades"))
-    throw InputError({"floating", std::nullopt, "structure.tower.flexible", "a rigid tower with flexible blades, or rigid blades"},
-                     where(deck, "structure.tower.flexible") +
-                         ": a flexible tower with flexible blades is not supported yet (the blades' staggered exchange with the "
-                         "bending tower is only conditionally stable; use the rigid tower, or rigid blades on the flexible tower)");
   const multibody::State initial = multibody::Multibody::make_state(model_);
   dt_s_ = simulation_keys(deck).dt_s;
   sea_.emplace(deck, platform_motion(initial), dt_s_);
@@ -306,10 +298,15 @@ Eigen::VectorXd FloatingScene::accelerations(double t, const FloatingState& s, c
   return a;
 }
 
-Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& s) {
+// The MBBT blades' states are not in the linearisation (nor in the static settling before it).
+void FloatingScene::refuse_flexible_blades_in_modes() const {
   if (blades_)
     throw InputError({"modes", std::nullopt, "blades", "rigid blades (drop the `blades` section)"},
                      "the flexible blades' states are not linearised yet: modes of the rigid-blade structure only");
+}
+
+Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& s) {
+  refuse_flexible_blades_in_modes();
   if (riser_)
     throw InputError({"modes", std::nullopt, "riser", "a deck without the `riser` section"},
                      "the riser's states are not linearised yet: drop the `riser` section");
@@ -349,6 +346,7 @@ Eigen::MatrixXd FloatingScene::linearised_system(double t, const FloatingState& 
 
 void FloatingScene::settle_elastic(double t, FloatingState& s, Settle how) {
   const int first_elastic = how == Settle::blades_in_motion ? multibody::kBlade : multibody::kTower;
+  if (how == Settle::tower_and_blades_at_rest) refuse_flexible_blades_in_modes();  // (the flexible tower with MBBT blades reaches here)
   std::vector<int> elastic;
   for (const int k : coordinates())
     if (k >= first_elastic) elastic.push_back(k);

@@ -124,7 +124,8 @@ class FloatingScene {
   //    blades only, the rigid speeds as they are — the spin's centrifugal stiffening and the
   //    aerodynamic loads of the operating rotor; the rigid DOFs' accelerations, small at a trimmed
   //    start, do not enter.
-  // NumericalError if it does not converge in 20 iterations.
+  // NumericalError if it does not converge in 20 iterations; InputError with the flexible (MBBT)
+  // blades (their states are not in it).
   enum class Settle { tower_and_blades_at_rest, blades_in_motion };
   void settle_elastic(double t, FloatingState& s, Settle how = Settle::tower_and_blades_at_rest);
   // The multibody DOFs (model.hpp Dof indices) the linearisation's coordinates are, in order: the
@@ -137,6 +138,7 @@ class FloatingScene {
   const TurbineRiser* riser() const { return riser_ ? &*riser_ : nullptr; }
 
  private:
+  void refuse_flexible_blades_in_modes() const;  // InputError: their states are not linearised
   class StageLoads;
   ShaftMotion shaft_at(double t, const multibody::State& body);
   // The equations of motion at `body` (into evaluation_) under the stage loads of `work`, a copy of

@@ -34,6 +34,7 @@ struct BladesKeys : BeamKeys {
   double step_matrix_max_rotation_rad = 0.02;
   double pitch_actuator_frequency_hz = 2.0;
   double pitch_actuator_damping_ratio = 0.7;
+  std::string interface_mass = "auto";
 };
 
 // Each key once: name, schema and the field it fills (decks/deck_section.hpp).
@@ -90,7 +91,15 @@ const DeckSection<BladesKeys>& blades_section() {
                                                 .doc("natural frequency of the second-order pitch actuator"),
              &BladesKeys::pitch_actuator_frequency_hz)
         .key("pitch_actuator_damping_ratio", Schema::number().greater_than(0.0).default_value(0.7).doc("its damping ratio"),
-             &BladesKeys::pitch_actuator_damping_ratio);
+             &BladesKeys::pitch_actuator_damping_ratio)
+        // The interface Jacobian of the exchange (turbine_blades.hpp; modules/multibody/README.md
+        // "Flexible tower with MBBT blades": without it the flexible tower's exchange diverges).
+        .key("interface_mass", Schema::choice({"auto", "on", "off"}).default_value("auto")
+                                   .doc("the multibody takes the rotor's apparent mass on the shaft (the blades' root-load "
+                                        "response to the shaft's acceleration over a large step, the free spin condensed out) "
+                                        "implicitly and holds only the remainder at the step's end; auto: on with "
+                                        "structure.tower.flexible, off on the rigid tower (its results as before)"),
+             &BladesKeys::interface_mass);
     return b;
   }();
   return section;
@@ -169,6 +178,29 @@ TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Mod
   gauges_eta_ = keys.gauges_eta;
   nodal_deflections_ = keys.nodal_deflections;
   start_ = keys.start;
+  interface_mass_ = keys.interface_mass == "on" || (keys.interface_mass == "auto" && model.params.tower.flexible);
+}
+
+void TurbineBlades::refresh_apparent_mass(Data& d, const RotorDemands& demands, double dt_large) {
+  const double h = rotor_.apparent_mass_step(dt_large, substeps_);
+  bool refreshed = false;
+  for (int b = 0; b < kBlades; ++b) {
+    if (d.rotor.state.blades[b].step_matrix.age > substeps_) continue;  // not rebuilt within this large step
+    d.blade_apparent_mass_h[b] = rotor_.blade_apparent_mass_h(d.rotor.shaft, d.rotor.state, h, b, demands.gravity);
+    refreshed = true;
+  }
+  if (!refreshed) return;
+  Mat6 blades = Mat6::Zero();
+  for (const Mat6& m : d.blade_apparent_mass_h) blades += m;
+  d.apparent_mass_h = rotor_.with_spin_condensed(blades, h, demands);
+}
+
+Vec6 TurbineBlades::shaft_acceleration_h(const Data& d) {
+  const ShaftMotion& sh = d.rotor.shaft;
+  const Mat3 t_gh = sh.orientation * rotation_matrix(Vec3(d.rotor.state.spin.rotor_azimuth_rad, 0.0, 0.0));
+  Vec6 a;
+  a << t_gh.transpose() * sh.apex_acceleration_m_s2, t_gh.transpose() * sh.angular_acceleration_rad_s2;
+  return a;
 }
 
 void TurbineBlades::start(const ShaftMotion& shaft, const multibody::State& state, double pitch_rad,
@@ -183,6 +215,11 @@ void TurbineBlades::add_stage_loads(const multibody::ChainKinematics& chain, con
   const Mat3& t_gh = chain.rotor.orientation;
   out.rotor_force_N += t_gh * d.held.force_h_N;
   out.rotor_moment_N_m += t_gh * d.held.moment_h_N_m;
+  if (!interface_mass_) return;
+  Mat6 turn = Mat6::Zero();
+  turn.topLeftCorner<3, 3>() = t_gh;
+  turn.bottomRightCorner<3, 3>() = t_gh;
+  out.rotor_added_mass += turn * d.apparent_mass_h * turn.transpose();
 }
 
 multibody::SpinMotion TurbineBlades::spin(double t, const Data& d) const {
@@ -197,11 +234,15 @@ multibody::SpinMotion TurbineBlades::spin(double t, const Data& d) const {
   return m;
 }
 
-void TurbineBlades::use_extrapolated_spin_profile(double t, Data& d) {
+void TurbineBlades::use_extrapolated_spin_profile(double t, Data& d) const {
   const SpinState& s = d.rotor.state.spin;
+  // With the interface mass the hub's and generator's spin accelerations are taken where the held
+  // remainder is, at the step's end (their last small step), not centred ΔT/2 before it: M_h
+  // linearises both about the same instant.
+  const double rotor = interface_mass_ ? s.rotor_mean_acceleration_rad_s2 : d.mean_rotor_acceleration_rad_s2;
+  const double generator = interface_mass_ ? s.generator_mean_acceleration_rad_s2 : d.mean_generator_acceleration_rad_s2;
   d.profile.t0 = t;
-  d.profile.at_t0 = {s.rotor_azimuth_rad, s.rotor_speed_rad_s, d.mean_rotor_acceleration_rad_s2,
-                     s.generator_azimuth_rad, s.generator_speed_rad_s, d.mean_generator_acceleration_rad_s2};
+  d.profile.at_t0 = {s.rotor_azimuth_rad, s.rotor_speed_rad_s, rotor, s.generator_azimuth_rad, s.generator_speed_rad_s, generator};
 }
 
 // The turbine as a pair for multi_rate_step: the multibody (slow) and the blades with the spin
@@ -223,7 +264,7 @@ class TurbineBlades::Coupling {
   // average and the spin the blades took over the step.
   void advance_slow(double t, double dt, SlowPass pass) {
     if (pass == SlowPass::predictor) {
-      use_extrapolated_spin_profile(t, d_);
+      b_.use_extrapolated_spin_profile(t, d_);
       d_.spin_before = d_.rotor.state.spin;
     } else {
       use_step_spin_profile(t, d_);
@@ -239,7 +280,18 @@ class TurbineBlades::Coupling {
     const SpinState& after = d_.rotor.state.spin;
     d_.mean_rotor_acceleration_rad_s2 = (after.rotor_speed_rad_s - d_.spin_before.rotor_speed_rad_s) / dt_large;
     d_.mean_generator_acceleration_rad_s2 = (after.generator_speed_rad_s - d_.spin_before.generator_speed_rad_s) / dt_large;
-    d_.held = average;
+    if (!b_.interface_mass_) {
+      d_.held = average;
+      return;
+    }
+    b_.refresh_apparent_mass(d_, demands_, dt_large);
+    // The remainder at the step's end, R = F + M_h a (header): free of the shaft's acceleration, so
+    // what averaging buys a load that follows the fast motion matters less here than the lag — the
+    // average is centred ΔT/2 before the next step starts, this sample at its start.
+    const Vec6 remainder = d_.apparent_mass_h * shaft_acceleration_h(d_);
+    d_.held = d_.rotor.last;
+    d_.held.force_h_N += remainder.head<3>();
+    d_.held.moment_h_N_m += remainder.tail<3>();
   }
   void finish_large_step() { copy_spin(d_, state_); }  // the blades own the spin
 

@@ -4,16 +4,35 @@
 // their aerodynamics and the rotor spin at Δt = ΔT/n), seed 000 §4.4 and DESIGN.md §4.
 //
 // Per large step [T, T + ΔT], the one multi-rate exchange (coupling/multi_rate_scheduler.hpp):
-//  1. the multibody advances with the blades' root loads averaged over the previous large step,
-//     held in the hub frame h and turned with the hub at every RK stage, and with the rotor spin
+//  1. the multibody advances with the blades' root loads held from the previous large step, in
+//     the hub frame h and turned with the hub at every RK stage, and with the rotor spin
 //     prescribed: extrapolated from the fast side's spin at T with its mean acceleration over the
-//     previous large step (the multibody never integrates the spin: DESIGN.md §4);
+//     previous large step (the multibody never integrates the spin: DESIGN.md §4). With the
+//     interface mass (below) the held part is only the remainder R and the rotor's apparent mass
+//     M_h is in the multibody's equations: root load = R − M_h [a_apex; α_s];
 //  2. the fast side takes n small steps through the shaft motion interpolated between T and
 //     T + ΔT; the scheduler averages its root loads over the step (trapezoidal weights);
 //  3. predictor_corrector: the multibody redoes the step from T with the new average and the
 //     spin the fast side computed; single_rate: n = 1;
 //  4. the multibody's spin is set to the fast side's at T + ΔT.
 // Platform translation and tilt carry the light blades on a heavy body: staggered, as the seed.
+//
+// Interface mass (issue 24; `blades.interface_mass`, on with the flexible tower). Exchanging the
+// whole root load explicitly is an added-mass partition: its inertial part −M a lags a large step,
+// which is unstable when the blades are heavy against what they hang on at the frequency that
+// matters (the flexible tower's top at its second modes: modules/multibody/README.md). The rotor's
+// load on the shaft is affine in the shaft's acceleration over a step, F ≈ F_0 − M_h [a_apex; α_s]
+// (FlexibleRotor::apparent_mass_h: each blade's linearised generalized-α step — their dynamic
+// stiffness at the time scale of the large step, rigid where their modes are fast against ΔT,
+// light where they are slow — with the free spin condensed out). The multibody takes M_h on its
+// left-hand side at every stage (multibody::AppliedLoads::rotor_added_mass) and holds only the
+// remainder R = F(T) + M_h a(T), taken at the step's end (not averaged: R no longer follows the
+// shaft's acceleration, and the sample lags half as much as the average; with the average the
+// 1000×-stiff blades' roll–drivetrain oscillation at 4.2 Hz grew, with the sample it decays).
+// A blade's share of M_h is refreshed after a large step in which its step matrix was rebuilt (the
+// same ageing: its deflection and spin; the first large step builds them all and is exchanged as
+// before), then the spin is condensed out of their sum again.
+#include <array>
 #include <functional>
 #include <optional>
 #include <span>
@@ -42,6 +61,9 @@ class TurbineBlades {
 
   TurbineBlades(const io::ValidatedDeck& deck, const multibody::Model& model, const RotorAero* aero);
 
+  // Whether the multibody takes the blades' apparent mass (interface mass, header).
+  bool interface_mass() const { return interface_mass_; }
+
   // The spin the multibody takes over a large step: quadratic from (t0, at_t0).
   struct SpinProfile {
     double t0 = 0.0;
@@ -51,13 +73,21 @@ class TurbineBlades {
   // step and the spin handed to the multibody.
   struct Data {
     FlexibleRotor::Data rotor;
-    FlexibleRotor::HubLoad held;    // root loads averaged over the last large step, hub frame
+    FlexibleRotor::HubLoad held;    // root loads averaged over the last large step (with the interface mass:
+                                    // the remainder R at its end), hub frame h, force at / moment about the apex
+    std::array<Mat6, kBlades> blade_apparent_mass_h{};  // each blade's share of M_b (spin held), h, apex
+    Mat6 apparent_mass_h = Mat6::Zero();  // M_h: the rotor's apparent mass on the shaft at the apex in h, the
+                                          // spin condensed out (zero without the interface mass) [kg, kg·m, kg·m²]
     SpinState spin_before;          // fast spin at the start of the last large step
     SpinProfile profile;
     double mean_rotor_acceleration_rad_s2 = 0.0;      // over the last large step
     double mean_generator_acceleration_rad_s2 = 0.0;
   };
-  Data make_data() const { return {rotor_.make_data(), {}, {}, {}, 0.0, 0.0}; }
+  Data make_data() const {
+    Data d{rotor_.make_data(), {}, {}, Mat6::Zero(), {}, {}, 0.0, 0.0};
+    for (Mat6& m : d.blade_apparent_mass_h) m.setZero();
+    return d;
+  }
 
   CouplingMode mode() const { return mode_; }
   int substeps() const { return substeps_; }
@@ -66,7 +96,8 @@ class TurbineBlades {
   void start(const ShaftMotion& shaft, const multibody::State& state, double pitch_rad, const RotorDemands& demands,
              Data& d, RotorAero::Data* aero);
 
-  // At a Runge–Kutta stage of the multibody: the held root loads turned with the stage hub.
+  // At a Runge–Kutta stage of the multibody: the held root loads turned with the stage hub (and the
+  // blades' apparent mass, turned likewise).
   void add_stage_loads(const multibody::ChainKinematics& chain, const Data& d, multibody::AppliedLoads& out) const;
   // The spin the multibody takes at time t (quadratic from the held profile).
   multibody::SpinMotion spin(double t, const Data& d) const;
@@ -91,9 +122,13 @@ class TurbineBlades {
 
  private:
   class Coupling;  // this turbine as a MultiRateCoupling
+  // M_h after the large step of dt_large: the shares of the blades whose step matrix was rebuilt in it.
+  void refresh_apparent_mass(Data& d, const RotorDemands& demands, double dt_large);
   static void use_step_spin_profile(double t, Data& d);          // the spin the blades took over the step from t
-  static void use_extrapolated_spin_profile(double t, Data& d);  // from the blades' spin at t, last step's mean acceleration
+  void use_extrapolated_spin_profile(double t, Data& d) const;  // from the blades' spin at t, last step's mean acceleration
   static void copy_spin(const Data& d, multibody::State& state);
+  // The shaft's acceleration the blades see now, [a_apex; α_s] in h.
+  static Vec6 shaft_acceleration_h(const Data& d);
 
   const multibody::Model& model_;
   FlexibleRotorParams params_;
@@ -104,6 +139,7 @@ class TurbineBlades {
   FlexibleRotor::Start start_ = FlexibleRotor::Start::static_loads;
   std::vector<double> gauges_eta_;  // span gauges (arclength fractions)
   bool nodal_deflections_ = false;  // B<b>N<nnn>_TD{x,y,z}r channels
+  bool interface_mass_ = false;     // the multibody takes the blades' apparent mass (header)
 };
 
 // Field lists (core/fields.hpp).
@@ -113,7 +149,7 @@ void fields(Archive& a, TurbineBlades::SpinProfile& p) {
 }
 template <class Archive>
 void fields(Archive& a, TurbineBlades::Data& d) {
-  a.io(d.rotor, d.held, d.spin_before, d.profile, d.mean_rotor_acceleration_rad_s2,
+  a.io(d.rotor, d.held, d.blade_apparent_mass_h, d.apparent_mass_h, d.spin_before, d.profile, d.mean_rotor_acceleration_rad_s2,
        d.mean_generator_acceleration_rad_s2);
 }
 

@@ -48,8 +48,16 @@ void add_added_mass(const ChainKinematics& k, const Mat6& added_mass, Generalise
   m.topLeftCorner<kChain, kChain>().noalias() += p.transpose().lazyProduct(added_mass * p);
 }
 
+// Qᵀ A Q with Q = [J_v,apex; J_ω,shaft] (6 × kMaxDofs): an apparent mass carried by the shaft.
+void add_rotor_added_mass(const ChainKinematics& k, const Mat6& added_mass, GeneralisedMatrix& m) {
+  Eigen::Matrix<double, 6, kChain> q;
+  q.topRows<3>() = k.apex.jacobian.leftCols<kChain>();
+  q.bottomRows<3>() = k.shaft.jacobian.leftCols<kChain>();
+  m.topLeftCorner<kChain, kChain>().noalias() += q.transpose().lazyProduct(added_mass * q);
+}
+
 GeneralisedMatrix assemble_mass(const Model& model, const State& state, const ChainKinematics& k,
-                                const Mat6& added_mass) {
+                                const Mat6& added_mass, const Mat6& rotor_added_mass = Mat6::Zero()) {
   BodyView views[4];
   const int n = body_views(model, k, views);
   GeneralisedMatrix m = GeneralisedMatrix::Zero();
@@ -65,6 +73,7 @@ GeneralisedMatrix assemble_mass(const Model& model, const State& state, const Ch
   for (int b = 0; b < model.blade_count && model.rr_blades.mode_count > 0; ++b)
     add_flexible_body_mass(model.rr_blades.inertia, blade_motion(model, state, k, b), m);
   add_added_mass(k, added_mass, m);
+  if (!rotor_added_mass.isZero(0.0)) add_rotor_added_mass(k, rotor_added_mass, m);
   return m;
 }
 
@@ -104,7 +113,7 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
               Evaluation& out) {
   ChainKinematics& k = out.kinematics;
   chain_kinematics(model, state, k);
-  out.mass = assemble_mass(model, state, k, loads.platform_added_mass);
+  out.mass = assemble_mass(model, state, k, loads.platform_added_mass, loads.rotor_added_mass);
 
   GeneralisedVector& f = out.force;
   f.setZero();
@@ -195,6 +204,15 @@ void evaluate(const Model& model, const State& state, const AppliedLoads& loads,
   }
   f.noalias() += k.apex.jacobian.transpose() * rotor_force;
   f.noalias() += k.rotor.jacobian.transpose() * rotor_moment;
+  // The shaft's apparent mass: Qᵀ A Q u̇ is on the left; its bias part −A [a_bias,apex; α_bias,shaft]
+  // (the velocity products) is a load.
+  if (!loads.rotor_added_mass.isZero(0.0)) {
+    Vec6 bias;
+    bias << k.apex.bias_acceleration_m_s2, k.shaft.bias_angular_acceleration_rad_s2;
+    const Vec6 load = -(loads.rotor_added_mass * bias);
+    f.noalias() += k.apex.jacobian.transpose() * load.head<3>();
+    f.noalias() += k.shaft.jacobian.transpose() * load.tail<3>();
+  }
 
   // Drivetrain: generator torque on the HSS (LSS-equivalent N T), shaft spring and damper.
   f[model.generator_dof] -= model.gearbox_ratio * loads.generator_torque_N_m;

@@ -61,6 +61,13 @@ Output Multibody::outputs(const Model& model, const AppliedLoads& loads, const S
     rotor_force += root.force_N;
     rotor_moment += root.moment_N_m + (root.point_m - top).cross(root.force_N);
   }
+  if (!loads.rotor_added_mass.isZero(0.0)) {  // the shaft's apparent mass at this acceleration
+    Vec6 a;
+    a << acceleration(k.apex, udot), angular_acceleration(k.shaft, udot);
+    const Vec6 load = -(loads.rotor_added_mass * a);
+    rotor_force += load.head<3>();
+    rotor_moment += load.tail<3>() + (k.apex.position_m - top).cross(load.head<3>());
+  }
   yaw.head<3>() += rotor_force;
   yaw.tail<3>() += rotor_moment;
   // Rayleigh–Ritz blades: each blade's load on the hub at its root — its d'Alembert load and its

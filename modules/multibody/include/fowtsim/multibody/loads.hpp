@@ -47,6 +47,12 @@ struct AppliedLoads {
   // moment about the apex, g. With rigid blades the driver sums its blade-node loads here.
   Vec3 rotor_force_N = Vec3::Zero();         // [N]
   Vec3 rotor_moment_N_m = Vec3::Zero();      // about the apex [N·m]
+  // Apparent mass of what hangs on the shaft, about the apex in g, acting as
+  // [F; M_apex] = −A [a_apex; α_s] (α_s the non-rotating shaft frame's angular acceleration: the
+  // spin is the fast side's); goes to the left-hand side. MBBT blades hand their dynamic stiffness
+  // at the root in here (the interface Jacobian, driver scenes/turbine_blades.hpp). Symmetric
+  // positive semi-definite.
+  Mat6 rotor_added_mass = Mat6::Zero();      // [kg, kg·m, kg·m²]
   // External point loads on the tower (its aerodynamic drag as consistent nodal loads), the first
   // tower_load_count: each acts at the tower point tower_point() places at its height, so on a
   // flexible tower it does work on the bending modes and moves with the deflection. A load below the
