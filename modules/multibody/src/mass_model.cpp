@@ -377,7 +377,7 @@ RayleighRitzBlades make_rr_blades(const RotorParams& r) {
   rule.kind = BladeRule::Kind::ElastoDynNodes;
   rule.elastodyn_nodes = r.rayleigh_ritz_blade_nodes;
   const SampledBlade sampled = sample_blade(blade, rule);
-  auto shape_at = [](const SampledBlade& s, Eigen::Index k, const Eigen::MatrixXd& flap, const Eigen::MatrixXd& edge) {
+  auto shape_at = [](Eigen::Index k, const Eigen::MatrixXd& flap, const Eigen::MatrixXd& edge) {
     std::array<Vec3, kMaxBodyModes> phi{};
     for (int j = 0; j < kBladeShapes; ++j) phi[j] = Vec3(flap(k, j), edge(k, j), 0.0);
     return phi;
@@ -385,7 +385,7 @@ RayleighRitzBlades make_rr_blades(const RotorParams& r) {
   for (std::size_t k = 0; k < sampled.points.size(); ++k) {
     const BladePoint& p = sampled.points[k];
     const auto i = static_cast<Eigen::Index>(k);
-    out.inertia.add_point(p.w * p.m, Vec3(0.0, 0.0, p.x), shape_at(sampled, i, sampled.u_flap, sampled.u_edge), kBladeShapes);
+    out.inertia.add_point(p.w * p.m, Vec3(0.0, 0.0, p.x), shape_at(i, sampled.u_flap, sampled.u_edge), kBladeShapes);
   }
   const RrBladeMatrices matrices = rr_blade_matrices(blade, sampled);
   out.stiffness = matrices.stiffness;
@@ -400,8 +400,8 @@ RayleighRitzBlades make_rr_blades(const RotorParams& r) {
     std::vector<BladeStation> list(spans.size());
     for (std::size_t k = 0; k < spans.size(); ++k) {
       const auto i = static_cast<Eigen::Index>(k);
-      list[k] = {spans[k], shape_at(sampled_at, i, sampled_at.u_flap, sampled_at.u_edge),
-                 shape_at(sampled_at, i, sampled_at.nu_flap, sampled_at.nu_edge), sampled_at.points[k].twist};
+      list[k] = {spans[k], shape_at(i, sampled_at.u_flap, sampled_at.u_edge),
+                 shape_at(i, sampled_at.nu_flap, sampled_at.nu_edge), sampled_at.points[k].twist};
     }
     return list;
   };
