@@ -84,11 +84,14 @@ TEST_CASE("load basis: event presets set the IEC wind event and the controller e
   // DLC 3.2: start-up from idling 10 s before the gust.
   const SweepCase& startup = find("dlc32_ws3_t-10");
   CHECK(override_of(startup, "controller.operating_mode") == "idling");
+  CHECK(override_of(startup, "aero.unsteady_airfoil") == "hgm");  // feathered blades in deep stall: dynamic stall on
   CHECK(override_of(startup, "controller.events") == "[{type: startup, at_s: 50}]");
   // DLC 6.3: the turbulent 1-year EWM, V_1 = 0.8 V_ref = 40 m/s, at the extreme yaw error.
   const SweepCase& parked = find("dlc63_yaw20_s1");
   CHECK(parked.wind_speed_m_s.value() == Approx(40.0).epsilon(1e-15));
   CHECK(override_of(parked, "wind.direction_deg") == "20");
+  CHECK(override_of(parked, "aero.unsteady_airfoil") == "hgm");
+  CHECK(override_of(find("dlc13_ws25_s1"), "aero.unsteady_airfoil").empty());  // operating cases keep the deck's aerodynamics
   // γ_f and analysis types from the table (IEC 61400-1 ed. 4 Table 3).
   const auto group = [&](const std::string& name) -> const LoadCaseGroup& {
     for (const LoadCaseGroup& g : spec.groups)

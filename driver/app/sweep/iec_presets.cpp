@@ -147,9 +147,12 @@ PresetPlan preset_plan(const std::string& preset, const TurbineClass& turbine, c
     set("wind.shear_exponent", number_text(wind::kEwmShearExponent));
   };
   // Idling: feathered at the deck's own upper pitch limit (90° for the NREL 5MW), generator off,
-  // rotor free (controller.operating_mode: idling), starting at rest.
+  // rotor free (controller.operating_mode: idling), starting at rest. With unsteady airfoils: on the
+  // static polars, flexible blades in deep stall can vibrate edgewise without bound (the run's warning
+  // says more).
   auto idling = [&] {
     set("controller.operating_mode", "idling");
+    set("aero.unsteady_airfoil", "hgm");
     set("structure.initial_conditions.rotor_speed_rpm", "0");
     set("structure.initial_conditions.blade_pitch_deg", number_text(controller.max_pitch_rad * 180.0 / std::numbers::pi));
   };

@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p, RotorAero::WindSetUp setup) {
+std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p, RotorAero::WindSetUp setup, std::optional<double> run_until_s) {
   if (p.model == wind::WindModel::turbulent) {
     if (setup == RotorAero::WindSetUp::check) {
       wind::validate(p);  // what generate_turbulence checks of its input
@@ -26,7 +26,12 @@ std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p, Roto
     // the OC3 load case's means by ≤ 0.01 %).
     wind::WindParams grid_only = p;
     grid_only.turbulence.tower_points = false;
-    return std::make_shared<wind::WindField>(p, std::make_shared<wind::FullField>(wind::generate_turbulence(grid_only).field));
+    // A point x downwind of the hub reads the periodic box at t − x/U (InflowWind's Taylor shift):
+    // the blades and the tower reach less than the grid's width upwind, as the sweep's lead time
+    // assumes (sweep/case_expansion.cpp).
+    std::optional<double> held_until_s;
+    if (run_until_s && p.speed_m_s > 0.0) held_until_s = *run_until_s + p.turbulence.width_m / p.speed_m_s;
+    return std::make_shared<wind::WindField>(p, std::make_shared<wind::FullField>(wind::generate_turbulence(grid_only, held_until_s).field));
   }
   if (p.model != wind::WindModel::bts) return std::make_shared<wind::WindField>(p);
   auto f = std::make_shared<wind::FullField>();
@@ -36,8 +41,9 @@ std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p, Roto
 
 }  // namespace
 
-RotorAero::RotorAero(aero::Params params, const wind::WindParams& wind, const multibody::Params& structure, WindSetUp setup)
-    : params_(std::move(params)), wind_params_(wind), wind_(make_wind(wind, setup)) {
+RotorAero::RotorAero(aero::Params params, const wind::WindParams& wind, const multibody::Params& structure, WindSetUp setup,
+                     std::optional<double> run_until_s)
+    : params_(std::move(params)), wind_params_(wind), wind_(make_wind(wind, setup, run_until_s)) {
   // ElastoDyn signs in the structure (PreCone < 0 cones upwind), the aero convention + upwind.
   hub_frame_rotor_.precone_rad = -structure.rotor.precone_deg * kDegree;
   hub_frame_rotor_.hub_radius_m = structure.rotor.hub_radius_m;

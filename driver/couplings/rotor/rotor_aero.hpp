@@ -5,6 +5,7 @@
 // the blade table is placed once in the hub frame (aero::place_rigid_rotor with a hub at rest),
 // then moved with the hub's pose, velocity and angular velocity at every evaluation.
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -45,8 +46,9 @@ class RotorAero {
   // The rotor of `params` in the wind of `wind` (a turbulent field is generated here, a TurbSim
   // file read); the rotor geometry (precone, hub radius) comes from the structure. Set up with
   // WindSetUp::check, a rotor in turbulent wind has no field: only params() and wind_params() serve.
+  // With `run_until_s`, a generated field holds only the samples a run to that time reaches.
   RotorAero(aero::Params params, const wind::WindParams& wind, const multibody::Params& structure,
-            WindSetUp setup = WindSetUp::run);
+            WindSetUp setup = WindSetUp::run, std::optional<double> run_until_s = std::nullopt);
   Data make_data() const;
 
   // Loads at time t on the rotor in the chain configuration `chain`, blade pitch `pitch_rad` (one

@@ -151,7 +151,7 @@ Schema floating_scene_schema() {
   });
 }
 
-FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : structure_(structure_params(deck.section("structure"))) {
+FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup, std::optional<double> run_until_s) : structure_(structure_params(deck.section("structure"))) {
   if (deck.has("blades")) TurbineBlades::configure(structure_);
   std::optional<aero::Params> aero;
   if (deck.has("aero")) aero = aero_params(deck);
@@ -170,7 +170,7 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
   sea_.emplace(deck, platform_motion(initial), dt_s_);
   if (deck.has("aero")) {
     rotor_.emplace(std::move(*aero), wind_params(deck.section("wind")), structure_,
-                   setup == SetUp::check ? RotorAero::WindSetUp::check : RotorAero::WindSetUp::run);
+                   setup == SetUp::check ? RotorAero::WindSetUp::check : RotorAero::WindSetUp::run, run_until_s);
     // One rotor, two descriptions: the aero blade table and the structure must agree on it.
     const aero::Params& ap = rotor_->params();
     if (ap.number_of_blades != structure_.rotor.blade_count)
@@ -254,6 +254,14 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup) : struc
     if (w.speed_m_s > 25.0 && structure_.initial_conditions.rotor_speed_rpm != 0.0 && operating)
       input_warnings_.push_back(fmt::format("wind {:.3g} m/s beyond the 25 m/s cut-out with the rotor spinning (the controller "
                                             "does not shut the turbine down)", w.speed_m_s));
+    // Feathered blades stand in deep stall, where the static polar's falling lift gives negative
+    // aerodynamic damping: flexible blades then vibrate edgewise without bound (an idling OC3 rotor
+    // at 50 m/s, 30° yaw: tip edge std 5.8 m quasi-steady, 0.10 m with HGM). AeroDyn runs such cases
+    // with its unsteady airfoil model for this reason.
+    const bool flexible = blades_ || model_.rr_blades.mode_count > 0;
+    if (!operating && flexible && rotor_->params().unsteady_airfoil == aero::UnsteadyAirfoilModel::none)
+      input_warnings_.push_back("an idling or parked rotor with flexible blades on the static polars (aero.unsteady_airfoil: none): "
+                                "in deep stall they can vibrate edgewise without bound; set aero.unsteady_airfoil: hgm");
   }
   if (deck.has("hydro") || deck.has("mooring"))
     sea_description_ = std::string(deck.has("hydro") ? "hydro" : "") + (deck.has("hydro") && deck.has("mooring") ? " + " : "") +
@@ -616,7 +624,8 @@ std::string FloatingScene::coupling_description() const {
 
 RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress) {
   const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), request.deck_path, request.deck_settings);
-  FloatingScene scene(deck);
+  const double t_end_s = request.t_max_s.value_or(simulation_keys(deck).t_max_s);
+  FloatingScene scene(deck, FloatingScene::SetUp::run, t_end_s);
   FloatingState state = scene.make_state();
   FixedStepScene run;
   run.written = scene.written();
@@ -624,8 +633,7 @@ RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& 
   run.metadata.extra = {{"scene", "floating"}};
   // A blade tip reaches about one tip radius (plus the overhang) upwind of the tower axis.
   const double upwind_reach_m = deck.number("structure.rotor.tip_radius_m") + std::abs(deck.number("structure.nacelle.overhang_m"));
-  run.input_warnings = record_length_warnings(scene.wind(), upwind_reach_m, scene.sea().incident_waves(),
-                                              request.t_max_s.value_or(simulation_keys(deck).t_max_s));
+  run.input_warnings = record_length_warnings(scene.wind(), upwind_reach_m, scene.sea().incident_waves(), t_end_s);
   run.step = [&](double t, double dt) { scene.step(t, dt, state); };
   run.row = [&](double t, std::span<double> row) { scene.row(t, state, row); };
   if (scene.can_checkpoint()) {  // the scene state whole, through its field lists

@@ -80,8 +80,10 @@ class FloatingScene {
  public:
   // Reads and checks the deck (InputError with file:line before anything runs). `check` sets up
   // all but a turbulent wind field (RotorAero::WindSetUp): a scene to check a deck with, not to run.
+  // `run_until_s`: where the run ends, if known; a generated wind field then holds only the part
+  // the run reaches (the same values: the record is still the deck's whole duration).
   enum class SetUp { run, check };
-  explicit FloatingScene(const io::ValidatedDeck& deck, SetUp setup = SetUp::run);
+  explicit FloatingScene(const io::ValidatedDeck& deck, SetUp setup = SetUp::run, std::optional<double> run_until_s = std::nullopt);
   FloatingScene(const FloatingScene&) = delete;  // the blades and the loads refer to members
   FloatingScene& operator=(const FloatingScene&) = delete;
   ~FloatingScene();

@@ -44,6 +44,9 @@ TimeBracket bracket_time(const FullField& f, double shifted_s, double time_s) {
   }
   if (lower >= f.nt) lower = f.nt - 1;  // fmod rounding at the period
   const int upper = (lower + 1) % f.nt;
+  if (f.nt_held > 0 && lower + 1 >= f.nt_held)
+    outside(time_s, "the wind field holds the first " + std::to_string(f.nt_held) + " of its " + std::to_string(f.nt) +
+                        " samples, generated for the run's length; shifted time " + std::to_string(shifted_s) + " s needs more");
   return {lower, upper, weight};
 }
 
@@ -85,12 +88,15 @@ void validate(const FullField& f) {
   if (!(f.u_hub_m_s > 0.0))
     bad_field("u_hub", "advection speed (hub mean speed) must be positive for Taylor's hypothesis");
   if (!std::isfinite(f.z_bottom_m) || !std::isfinite(f.z_hub_m)) bad_field("z_bottom", "not finite");
-  const std::size_t expected = static_cast<std::size_t>(f.nt) * f.nz * f.ny * 3;
+  if (f.nt_held < 0 || f.nt_held > f.nt || (f.nt_held > 0 && (f.nt_held < 2 || !f.periodic)))
+    bad_field("nt_held", "held samples must be 0 (all) or 2 … nt of a periodic field, got " + std::to_string(f.nt_held));
+  const std::size_t held = static_cast<std::size_t>(f.held_steps());
+  const std::size_t expected = held * f.nz * f.ny * 3;
   if (f.grid.size() != expected)
-    bad_field("grid", "grid array has " + std::to_string(f.grid.size()) + " values, expected nt*nz*ny*3 = " +
+    bad_field("grid", "grid array has " + std::to_string(f.grid.size()) + " values, expected held samples*nz*ny*3 = " +
                           std::to_string(expected));
-  if (f.tower.size() != static_cast<std::size_t>(f.nt) * f.n_tower * 3)
-    bad_field("tower", "tower array size differs from nt*n_tower*3");
+  if (f.tower.size() != held * f.n_tower * 3)
+    bad_field("tower", "tower array size differs from held samples*n_tower*3");
 }
 
 bool covers(const FullField& f, const Vec3& p) {

@@ -11,6 +11,7 @@
 
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/fft.hpp"
+#include "fowtsim/core/huge_pages.hpp"
 #include "fowtsim/wind/coherent_sampler.hpp"
 #include "fowtsim/wind/iec_turbulence.hpp"
 #include "fowtsim/wind/tower_sampler.hpp"
@@ -59,7 +60,7 @@ void fill_random_phasors(MersenneTwister64& generator, Complex* out, std::size_t
   }
 }
 
-GeneratedTurbulence generate_turbulence(const WindParams& params) {
+GeneratedTurbulence generate_turbulence(const WindParams& params, std::optional<double> held_until_s) {
   validate(params);
   if (params.model != WindModel::turbulent)
     throw InputError(ErrorContext{"wind.turbulence", std::nullopt, "wind.model", ""},
@@ -83,10 +84,16 @@ GeneratedTurbulence generate_turbulence(const WindParams& params) {
   f.u_hub_m_s = v_hub;
   f.periodic = true;
   const int n = f.nt;
+  // Samples held: up to held_until_s, and the next one that brackets it.
+  if (held_until_s && *held_until_s >= 0.0) {
+    const double last = std::ceil(*held_until_s / t.dt_s) + 1.0;
+    if (last + 1.0 < n) f.nt_held = std::max(2, static_cast<int>(last) + 1);
+  }
+  const int held = f.held_steps();
   const std::size_t points = static_cast<std::size_t>(f.ny) * f.nz;
-  f.grid.assign(static_cast<std::size_t>(n) * points * 3, 0.0f);
+  assign_on_huge_pages(f.grid, static_cast<std::size_t>(held) * points * 3, 0.0f);
   f.n_tower = t.tower_points ? turbsim_tower_point_count(f.z_bottom_m, f.dz_m) : 0;
-  f.tower.assign(static_cast<std::size_t>(n) * f.n_tower * 3, 0.0f);
+  f.tower.assign(static_cast<std::size_t>(held) * f.n_tower * 3, 0.0f);
 
   const int bins = n / 2 + 1;                        // c2r input length
   const int top = (n % 2 == 0) ? n / 2 - 1 : n / 2;  // last carried frequency index (no Nyquist)
@@ -106,8 +113,9 @@ GeneratedTurbulence generate_turbulence(const WindParams& params) {
   constexpr std::size_t kPointBlock = 32;
   std::vector<Complex> x_block(points * kFrequencyBlock);
   double amplitudes[kFrequencyBlock];
-  std::vector<float> series_block(kPointBlock * static_cast<std::size_t>(n));
-  std::vector<Complex> spectra(points * bins);  // [point][bin]; bins 0 and past `top` stay zero
+  std::vector<float> series_block(kPointBlock * static_cast<std::size_t>(held));
+  std::vector<Complex> spectra;  // [point][bin]; bins 0 and past `top` stay zero
+  assign_on_huge_pages(spectra, points * bins, Complex{});
   // signal[t] = Σ_k Y_k e^{+i 2π k t / n} over the Hermitian-extended spectrum Y_0 … Y_{n/2}.
   InverseRealFft inverse(static_cast<std::size_t>(n));
   const auto inverse_dft = [&inverse, bins](const Complex* y) {
@@ -181,27 +189,27 @@ GeneratedTurbulence generate_turbulence(const WindParams& params) {
         const std::size_t j = j0 + b;
         const double* series = inverse_dft(&spectra[j * bins]);
         const double mean = (c == 0) ? mean_u[j / f.ny] : 0.0;
-        float* out_series = &series_block[b * static_cast<std::size_t>(n)];
-        for (int it = 0; it < n; ++it) {
+        float* out_series = &series_block[b * static_cast<std::size_t>(held)];
+        for (int it = 0; it < held; ++it) {
           const double value = mean + series[it];
           out_series[it] = static_cast<float>(value);
         }
       }
-      for (int it = 0; it < n; ++it) {
+      for (int it = 0; it < held; ++it) {
         float* row = &f.grid[(static_cast<std::size_t>(it) * points + j0) * 3 + c];
-        for (std::size_t b = 0; b < block; ++b) row[3 * b] = series_block[b * static_cast<std::size_t>(n) + it];
+        for (std::size_t b = 0; b < block; ++b) row[3 * b] = series_block[b * static_cast<std::size_t>(held) + it];
       }
     }
     const std::size_t nw = static_cast<std::size_t>(f.n_tower);
     if (tower.first_on_grid())  // tower point 0 is the grid's bottom-centre point (TurbSim: the same point)
-      for (int it = 0; it < n; ++it)
+      for (int it = 0; it < held; ++it)
         f.tower[(static_cast<std::size_t>(it) * nw) * 3 + c] =
             f.grid[(static_cast<std::size_t>(it) * points + tower.first_grid_index()) * 3 + c];
     for (std::size_t d = 0; d < tower_draws; ++d) {
       const double* series = inverse_dft(&tower_spectra[d * bins]);
       const double mean = (c == 0) ? tower_mean_u[d] : 0.0;
       const std::size_t k = static_cast<std::size_t>(tower_first) + d;
-      for (int it = 0; it < n; ++it)
+      for (int it = 0; it < held; ++it)
         f.tower[(static_cast<std::size_t>(it) * nw + k) * 3 + c] = static_cast<float>(mean + series[it]);
     }
   }

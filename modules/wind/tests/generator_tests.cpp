@@ -41,6 +41,11 @@ TEST_CASE("the coherent sampler realises the IEC coherence matrix", "[verificati
   CHECK(sampler.prepare(2.5) == CoherentSampler::Method::independent);  // exp(−2.5·4) = 4.5e-5 < 1e-4
   CHECK(sampler_coherence_error(sampler, ny, dy, dz, 2.5) < CoherentSampler::independence_threshold);
   CHECK(sampler.max_dropped_coherence() == Approx(std::exp(-10.0)).epsilon(1e-12));
+  // Odd sizes both ways (a centre column and row, the parity classes 4·3, 4·2, 3·3, 3·2) as the
+  // 31 × 31 OC3 grid has them; its own lowest frequency's decay, a = 0.0045/m.
+  CoherentSampler odd(7, 5, 4.8, 4.8);
+  CHECK(odd.prepare(0.0045) == CoherentSampler::Method::dense);
+  CHECK(sampler_coherence_error(odd, 7, 4.8, 4.8, 0.0045) < 1e-12);  // exact up to round-off
 }
 
 // Intent: IEC sigma_1: NTM class B at 12 m/s = 0.14 (0.75·12 + 5.6) = 2.044 m/s, as TurbSim's summary
@@ -105,6 +110,29 @@ TEST_CASE("the generator is deterministic per seed", "[unit][wind][turbulence]")
   CHECK(a.field.periodic);
   CHECK(a.stats.dense_frequencies + a.stats.embedding_frequencies + a.stats.independent_frequencies ==
         a.stats.frequencies);
+}
+
+// Intent: a field generated for a shorter run holds the whole record's first samples, bit for bit
+// (the same spectra and draws; only the stored rows shrink), and a query past them stops the run
+// with the time rather than wrapping around.
+TEST_CASE("a field held up to a time is the whole record's beginning", "[unit][wind][turbulence]") {
+  WindParams p = small_turbulent_field(7);
+  p.turbulence.tower_points = true;
+  const GeneratedTurbulence whole = generate_turbulence(p);
+  const GeneratedTurbulence part = generate_turbulence(p, 100.0);  // 600 s record, dt 0.25 s
+  CHECK(part.field.nt == whole.field.nt);
+  CHECK(part.field.nt_held == 402);  // samples 0 … 400 bracket 100 s, and one more
+  CHECK(whole.field.nt_held == 0);
+  REQUIRE(part.field.n_tower > 0);
+  const std::size_t points = static_cast<std::size_t>(p.turbulence.ny) * p.turbulence.nz;
+  REQUIRE(part.field.grid.size() == 402 * points * 3);
+  CHECK(std::memcmp(part.field.grid.data(), whole.field.grid.data(), part.field.grid.size() * sizeof(float)) == 0);
+  CHECK(std::memcmp(part.field.tower.data(), whole.field.tower.data(), part.field.tower.size() * sizeof(float)) == 0);
+  validate(part.field);
+  const Vec3 hub(0.0, 0.0, 90.0);
+  CHECK(full_field_velocity(part.field, hub, 99.9) == full_field_velocity(whole.field, hub, 99.9));
+  CHECK_THROWS_AS(full_field_velocity(part.field, hub, 100.6), NumericalError);
+  CHECK(generate_turbulence(p, 599.6).field.nt_held == 0);  // the bracket and one more reach the end: all held
 }
 
 // Intent: one-point spectra of u, v, w averaged over octave bands within ±10 % of the IEC Kaimal

@@ -11,7 +11,10 @@ struct WindGrid {
   int ny = 0;                // grid points across [-]
   int nz = 0;                // grid points vertically [-]
   int n_tower = 0;           // tower points below the grid [-] (0: none)
-  int nt = 0;                // time samples [-]
+  int nt = 0;                // time samples of the record [-]
+  int nt_held = 0;           // of those, the first held in grid and tower [-]; 0: all nt. A run's own
+                             // generated field holds only the samples the run reaches (the record and
+                             // its period are still nt's: the held samples are the same values)
   double dy_m = 0.0;         // lateral spacing [m]
   double dz_m = 0.0;         // vertical spacing [m]
   double dt_s = 0.0;         // time step [s]
@@ -19,8 +22,10 @@ struct WindGrid {
   double z_hub_m = 0.0;      // hub (reference) height [m]
   double u_hub_m_s = 0.0;    // mean hub speed = advection speed of Taylor's hypothesis [m/s]
   bool periodic = false;     // true: record wraps (TurbSim format id 8); false: id 7
-  std::vector<float> grid;   // (nt, nz, ny, 3) u, v, w in the wind frame [m/s]; index ((it·nz+iz)·ny+iy)·3+c
-  std::vector<float> tower;  // (nt, n_tower, 3) [m/s]; index (it·n_tower+k)·3+c
+  std::vector<float> grid;   // (held, nz, ny, 3) u, v, w in the wind frame [m/s]; index ((it·nz+iz)·ny+iy)·3+c
+  std::vector<float> tower;  // (held, n_tower, 3) [m/s]; index (it·n_tower+k)·3+c
+
+  int held_steps() const { return nt_held > 0 ? nt_held : nt; }
 };
 
 }  // namespace fowtsim

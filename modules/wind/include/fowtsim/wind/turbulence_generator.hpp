@@ -25,6 +25,7 @@
 #include <complex>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <random>
 
 #include "fowtsim/wind/full_field.hpp"
@@ -65,7 +66,10 @@ struct GeneratedTurbulence {
 };
 
 // params.model must be turbulent (validated). Memory: the field (nt·ny·nz·3 float) plus one
-// spectrum buffer (ny·nz·(nt/2+1) complex double) reused for the three components.
-GeneratedTurbulence generate_turbulence(const WindParams& params);
+// spectrum buffer (ny·nz·(nt/2+1) complex double) reused for the three components. With
+// `held_until_s`, the field holds only the samples up to that time of the record (plus one), the
+// same values as the whole record's (its spectra are the whole record's; only the transposes
+// and the memory shrink): a run that ends before the record does not store what it never reads.
+GeneratedTurbulence generate_turbulence(const WindParams& params, std::optional<double> held_until_s = std::nullopt);
 
 }  // namespace fowtsim::wind
