@@ -255,7 +255,7 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
 
   SweepRequest sweep_request;
-  std::string sweep_output_dir;
+  std::string sweep_output_dir, sweep_base_deck;
   int sweep_max_running = 0;
   bool sweep_list = false, sweep_slurm = false, sweep_collect = false;
   auto* sweep = app.add_subcommand("sweep", "design-load-case sweep: expand a sweep spec into cases, run them locally or "
@@ -266,6 +266,10 @@ int main(int argc, char** argv) {
   auto* sweep_slurm_flag = sweep->add_flag("--slurm", sweep_slurm, "write the case decks and a job-array script and submit it with sbatch");
   auto* sweep_collect_flag = sweep->add_flag("--collect", sweep_collect, "write the load table from the cases that have finished");
   sweep->add_option("--output-dir", sweep_output_dir, "output folder (default: the spec's sweep.output_dir, or runs/sweeps/<name>)");
+  sweep->add_option("--base-deck", sweep_base_deck,
+                    "scene deck every case includes, instead of the spec's sweep.base_deck: the same cases, seeds and "
+                    "events on another model (give another --output-dir too)")
+      ->check(CLI::ExistingFile);
   sweep->add_option("--partition", sweep_request.slurm.partition, "Slurm partition (--slurm)");
   sweep->add_option("--time", sweep_request.slurm.time_limit, "Slurm time limit per array task, e.g. 02:00:00 (--slurm)");
   sweep->add_option("--account", sweep_request.slurm.account, "Slurm account charged for the job (--slurm; over the spec's slurm.account)");
@@ -343,6 +347,7 @@ int main(int argc, char** argv) {
                              : sweep_collect ? SweepRequest::Action::collect
                                              : SweepRequest::Action::run_local;
       if (!sweep_output_dir.empty()) sweep_request.output_dir = sweep_output_dir;
+      if (!sweep_base_deck.empty()) sweep_request.base_deck = sweep_base_deck;
       if (sweep_max_running > 0) sweep_request.slurm.max_running = sweep_max_running;
       return run_sweep_command(sweep_request, stdout);
     }

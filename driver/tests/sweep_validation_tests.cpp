@@ -37,6 +37,24 @@ TEST_CASE("sweep example: every case deck passes the run's checks with DLC 6.1 i
                     dir / "list.log") == 0);
 }
 
+// Intent: --base-deck runs the spec's cases on another model: the case decks include that deck,
+// with the same seeds (they derive from the spec, not from the model).
+TEST_CASE("sweep --base-deck: the same cases and seeds on another deck", "[unit][sweep]") {
+  const std::filesystem::path dir = testing::scratch_dir("sweep_base_deck");
+  const std::filesystem::path spec = testing::source_dir() / "inputs/sweeps/dlc12_oc3.yaml";
+  const std::filesystem::path fast = testing::source_dir() / "inputs/oc3_hywind/turbine_ntm_12mps_irregular_fast.yaml";
+  REQUIRE(run_fowtsim("sweep " + spec.string() + " --slurm --dry-run --output-dir " + (dir / "spec").string(), dir / "spec.log") == 0);
+  REQUIRE(run_fowtsim("sweep " + spec.string() + " --slurm --dry-run --base-deck " + fast.string() + " --output-dir " +
+                          (dir / "fast").string(),
+                      dir / "fast.log") == 0);
+  const std::string original = read_text(dir / "spec/decks/dlc12_ws12_s1.yaml");
+  const std::string other = read_text(dir / "fast/decks/dlc12_ws12_s1.yaml");
+  CHECK_THAT(other, Catch::Contains("turbine_ntm_12mps_irregular_fast.yaml"));
+  CHECK_THAT(original, !Catch::Contains("_fast.yaml"));
+  const auto seed_line = [](const std::string& text) { return text.substr(text.find("seed:"), text.find('\n', text.find("seed:")) - text.find("seed:")); };
+  CHECK(seed_line(original) == seed_line(other));
+}
+
 TEST_CASE("sweep: a case deck `fowtsim run` would reject stops --list and --slurm --dry-run and a local run before anything",
           "[unit][sweep]") {
   const std::filesystem::path dir = testing::scratch_dir("sweep_rejected_case");

@@ -269,6 +269,7 @@ void trim_cases_in_place(std::FILE* out, const SweepRequest& request, const Swee
 int run_sweep_command(const SweepRequest& request, std::FILE* out) {
   SweepSpec spec = read_sweep_spec(request.spec);
   if (request.output_dir) spec.output_dir = *request.output_dir;
+  if (request.base_deck) spec.base_deck = std::filesystem::absolute(*request.base_deck);
   const BaseDeckFacts base = read_base_deck_facts(spec.base_deck);
   std::vector<SweepCase> cases = expand_cases(spec, base);
   const SweepLayout layout{spec.output_dir};

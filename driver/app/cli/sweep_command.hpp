@@ -18,6 +18,8 @@ struct SweepRequest {
   std::filesystem::path spec;                       // the sweep spec (YAML)
   Action action = Action::run_local;                // what to do
   std::optional<std::filesystem::path> output_dir;  // overrides the spec's sweep.output_dir
+  std::optional<std::filesystem::path> base_deck;   // overrides the spec's sweep.base_deck (the same cases, seeds
+                                                    // and events on another model, e.g. the fastest one)
   int jobs = 1;                                     // local processes at once
   sweep::SlurmOptions slurm;                        // --slurm: partition, time, packing, throttle
   bool dry_run = false;                             // --slurm: write everything, do not submit

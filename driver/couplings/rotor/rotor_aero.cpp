@@ -27,11 +27,14 @@ std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p, Roto
     wind::WindParams grid_only = p;
     grid_only.turbulence.tower_points = false;
     // A point x downwind of the hub reads the periodic box at t − x/U (InflowWind's Taylor shift):
-    // the blades and the tower reach less than the grid's width upwind, as the sweep's lead time
-    // assumes (sweep/case_expansion.cpp).
-    std::optional<double> held_until_s;
-    if (run_until_s && p.speed_m_s > 0.0) held_until_s = *run_until_s + p.turbulence.width_m / p.speed_m_s;
-    return std::make_shared<wind::WindField>(p, std::make_shared<wind::FullField>(wind::generate_turbulence(grid_only, held_until_s).field));
+    // blades, tower and platform stay within the grid's width of the hub up- and downwind, as the
+    // sweep's lead time assumes (sweep/case_expansion.cpp).
+    std::optional<wind::HeldTimes> held;
+    if (run_until_s && p.speed_m_s > 0.0) {
+      const double reach_s = p.turbulence.width_m / p.speed_m_s;
+      held = wind::HeldTimes{*run_until_s + reach_s, reach_s};
+    }
+    return std::make_shared<wind::WindField>(p, std::make_shared<wind::FullField>(wind::generate_turbulence(grid_only, held).field));
   }
   if (p.model != wind::WindModel::bts) return std::make_shared<wind::WindField>(p);
   auto f = std::make_shared<wind::FullField>();

@@ -44,10 +44,16 @@ TimeBracket bracket_time(const FullField& f, double shifted_s, double time_s) {
   }
   if (lower >= f.nt) lower = f.nt - 1;  // fmod rounding at the period
   const int upper = (lower + 1) % f.nt;
-  if (f.nt_held > 0 && lower + 1 >= f.nt_held)
-    outside(time_s, "the wind field holds the first " + std::to_string(f.nt_held) + " of its " + std::to_string(f.nt) +
-                        " samples, generated for the run's length; shifted time " + std::to_string(shifted_s) + " s needs more");
-  return {lower, upper, weight};
+  if (f.nt_held == 0) return {lower, upper, weight};
+  // Held rows: the record's first nt_held, then its last nt_tail.
+  const auto held_row = [&](int it) {
+    if (it < f.nt_held) return it;
+    if (it >= f.nt - f.nt_tail) return f.nt_held + it - (f.nt - f.nt_tail);
+    outside(time_s, "the wind field holds the first " + std::to_string(f.nt_held) + " and the last " + std::to_string(f.nt_tail) +
+                        " of its " + std::to_string(f.nt) + " samples, generated for the run's length; shifted time " +
+                        std::to_string(shifted_s) + " s needs more");
+  };
+  return {held_row(lower), held_row(upper), weight};
 }
 
 Vec3 grid_sample(const FullField& f, int it, int iz, int iy) {
@@ -88,8 +94,10 @@ void validate(const FullField& f) {
   if (!(f.u_hub_m_s > 0.0))
     bad_field("u_hub", "advection speed (hub mean speed) must be positive for Taylor's hypothesis");
   if (!std::isfinite(f.z_bottom_m) || !std::isfinite(f.z_hub_m)) bad_field("z_bottom", "not finite");
-  if (f.nt_held < 0 || f.nt_held > f.nt || (f.nt_held > 0 && (f.nt_held < 2 || !f.periodic)))
-    bad_field("nt_held", "held samples must be 0 (all) or 2 … nt of a periodic field, got " + std::to_string(f.nt_held));
+  if (f.nt_held < 0 || f.nt_tail < 0 || (f.nt_held == 0 && f.nt_tail > 0) ||
+      (f.nt_held > 0 && (f.nt_held < 2 || f.nt_held + f.nt_tail >= f.nt || !f.periodic)))
+    bad_field("nt_held", "held samples must be 0 (all), or first and last samples fewer than nt together of a periodic field, got " +
+                             std::to_string(f.nt_held) + " and " + std::to_string(f.nt_tail));
   const std::size_t held = static_cast<std::size_t>(f.held_steps());
   const std::size_t expected = held * f.nz * f.ny * 3;
   if (f.grid.size() != expected)

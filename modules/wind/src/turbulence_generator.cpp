@@ -60,7 +60,7 @@ void fill_random_phasors(MersenneTwister64& generator, Complex* out, std::size_t
   }
 }
 
-GeneratedTurbulence generate_turbulence(const WindParams& params, std::optional<double> held_until_s) {
+GeneratedTurbulence generate_turbulence(const WindParams& params, std::optional<HeldTimes> held_times) {
   validate(params);
   if (params.model != WindModel::turbulent)
     throw InputError(ErrorContext{"wind.turbulence", std::nullopt, "wind.model", ""},
@@ -84,12 +84,19 @@ GeneratedTurbulence generate_turbulence(const WindParams& params, std::optional<
   f.u_hub_m_s = v_hub;
   f.periodic = true;
   const int n = f.nt;
-  // Samples held: up to held_until_s, and the next one that brackets it.
-  if (held_until_s && *held_until_s >= 0.0) {
-    const double last = std::ceil(*held_until_s / t.dt_s) + 1.0;
-    if (last + 1.0 < n) f.nt_held = std::max(2, static_cast<int>(last) + 1);
+  // Samples held: up to `until_s` and from `before_start_s` before the end, each with the next
+  // sample that brackets it.
+  if (held_times && held_times->until_s >= 0.0 && held_times->before_start_s >= 0.0) {
+    const double head = std::ceil(held_times->until_s / t.dt_s) + 2.0;
+    const double tail = std::ceil(held_times->before_start_s / t.dt_s) + 2.0;
+    if (head + tail < n) {
+      f.nt_held = static_cast<int>(head);
+      f.nt_tail = static_cast<int>(tail);
+    }
   }
   const int held = f.held_steps();
+  // Record sample of held row r.
+  const auto record_row = [&f, n](int r) { return (f.nt_held == 0 || r < f.nt_held) ? r : n - f.nt_tail + (r - f.nt_held); };
   const std::size_t points = static_cast<std::size_t>(f.ny) * f.nz;
   assign_on_huge_pages(f.grid, static_cast<std::size_t>(held) * points * 3, 0.0f);
   f.n_tower = t.tower_points ? turbsim_tower_point_count(f.z_bottom_m, f.dz_m) : 0;
@@ -190,9 +197,9 @@ GeneratedTurbulence generate_turbulence(const WindParams& params, std::optional<
         const double* series = inverse_dft(&spectra[j * bins]);
         const double mean = (c == 0) ? mean_u[j / f.ny] : 0.0;
         float* out_series = &series_block[b * static_cast<std::size_t>(held)];
-        for (int it = 0; it < held; ++it) {
-          const double value = mean + series[it];
-          out_series[it] = static_cast<float>(value);
+        for (int r = 0; r < held; ++r) {
+          const double value = mean + series[record_row(r)];
+          out_series[r] = static_cast<float>(value);
         }
       }
       for (int it = 0; it < held; ++it) {
@@ -209,8 +216,8 @@ GeneratedTurbulence generate_turbulence(const WindParams& params, std::optional<
       const double* series = inverse_dft(&tower_spectra[d * bins]);
       const double mean = (c == 0) ? tower_mean_u[d] : 0.0;
       const std::size_t k = static_cast<std::size_t>(tower_first) + d;
-      for (int it = 0; it < held; ++it)
-        f.tower[(static_cast<std::size_t>(it) * nw + k) * 3 + c] = static_cast<float>(mean + series[it]);
+      for (int r = 0; r < held; ++r)
+        f.tower[(static_cast<std::size_t>(r) * nw + k) * 3 + c] = static_cast<float>(mean + series[record_row(r)]);
     }
   }
   stats.max_dropped_coherence = std::max(sampler.max_dropped_coherence(), tower.max_dropped_coherence());

@@ -119,20 +119,27 @@ TEST_CASE("a field held up to a time is the whole record's beginning", "[unit][w
   WindParams p = small_turbulent_field(7);
   p.turbulence.tower_points = true;
   const GeneratedTurbulence whole = generate_turbulence(p);
-  const GeneratedTurbulence part = generate_turbulence(p, 100.0);  // 600 s record, dt 0.25 s
+  const GeneratedTurbulence part = generate_turbulence(p, HeldTimes{100.0, 2.0});  // 600 s record, dt 0.25 s
   CHECK(part.field.nt == whole.field.nt);
   CHECK(part.field.nt_held == 402);  // samples 0 … 400 bracket 100 s, and one more
+  CHECK(part.field.nt_tail == 10);   // the last 8 bracket 2 s before the start, and one more
   CHECK(whole.field.nt_held == 0);
   REQUIRE(part.field.n_tower > 0);
-  const std::size_t points = static_cast<std::size_t>(p.turbulence.ny) * p.turbulence.nz;
-  REQUIRE(part.field.grid.size() == 402 * points * 3);
-  CHECK(std::memcmp(part.field.grid.data(), whole.field.grid.data(), part.field.grid.size() * sizeof(float)) == 0);
-  CHECK(std::memcmp(part.field.tower.data(), whole.field.tower.data(), part.field.tower.size() * sizeof(float)) == 0);
+  const std::size_t row = static_cast<std::size_t>(p.turbulence.ny) * p.turbulence.nz * 3, tower_row = part.field.n_tower * 3;
+  REQUIRE(part.field.grid.size() == 412 * row);
+  const std::size_t tail_start = static_cast<std::size_t>(whole.field.nt - 10);
+  CHECK(std::memcmp(part.field.grid.data(), whole.field.grid.data(), 402 * row * sizeof(float)) == 0);
+  CHECK(std::memcmp(&part.field.grid[402 * row], &whole.field.grid[tail_start * row], 10 * row * sizeof(float)) == 0);
+  CHECK(std::memcmp(part.field.tower.data(), whole.field.tower.data(), 402 * tower_row * sizeof(float)) == 0);
+  CHECK(std::memcmp(&part.field.tower[402 * tower_row], &whole.field.tower[tail_start * tower_row], 10 * tower_row * sizeof(float)) == 0);
   validate(part.field);
-  const Vec3 hub(0.0, 0.0, 90.0);
+  const Vec3 hub(0.0, 0.0, 90.0), downwind(20.0, 0.0, 90.0);  // 20 m downwind: 2 s earlier, the record's end at t = 0
   CHECK(full_field_velocity(part.field, hub, 99.9) == full_field_velocity(whole.field, hub, 99.9));
+  CHECK(full_field_velocity(part.field, downwind, 0.1) == full_field_velocity(whole.field, downwind, 0.1));
+  CHECK(full_field_velocity(part.field, downwind, 2.1) == full_field_velocity(whole.field, downwind, 2.1));  // wraps back to the head
   CHECK_THROWS_AS(full_field_velocity(part.field, hub, 100.6), NumericalError);
-  CHECK(generate_turbulence(p, 599.6).field.nt_held == 0);  // the bracket and one more reach the end: all held
+  CHECK_THROWS_AS(full_field_velocity(part.field, Vec3(30.0, 0.0, 90.0), 0.0), NumericalError);  // 3 s before the start
+  CHECK(generate_turbulence(p, HeldTimes{595.0, 5.0}).field.nt_held == 0);  // together the whole record: all held
 }
 
 // Intent: one-point spectra of u, v, w averaged over octave bands within ±10 % of the IEC Kaimal

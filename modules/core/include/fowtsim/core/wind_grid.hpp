@@ -14,7 +14,9 @@ struct WindGrid {
   int nt = 0;                // time samples of the record [-]
   int nt_held = 0;           // of those, the first held in grid and tower [-]; 0: all nt. A run's own
                              // generated field holds only the samples the run reaches (the record and
-                             // its period are still nt's: the held samples are the same values)
+                             // its period are still nt's: the held samples are the same values) ...
+  int nt_tail = 0;           // ... and the record's last nt_tail, held after them (points downwind of the
+                             // hub read the periodic record's end at the run's start) [-]
   double dy_m = 0.0;         // lateral spacing [m]
   double dz_m = 0.0;         // vertical spacing [m]
   double dt_s = 0.0;         // time step [s]
@@ -25,7 +27,7 @@ struct WindGrid {
   std::vector<float> grid;   // (held, nz, ny, 3) u, v, w in the wind frame [m/s]; index ((it·nz+iz)·ny+iy)·3+c
   std::vector<float> tower;  // (held, n_tower, 3) [m/s]; index (it·n_tower+k)·3+c
 
-  int held_steps() const { return nt_held > 0 ? nt_held : nt; }
+  int held_steps() const { return nt_held > 0 ? nt_held + nt_tail : nt; }
 };
 
 }  // namespace fowtsim

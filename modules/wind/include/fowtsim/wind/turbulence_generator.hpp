@@ -66,10 +66,13 @@ struct GeneratedTurbulence {
 };
 
 // params.model must be turbulent (validated). Memory: the field (nt·ny·nz·3 float) plus one
-// spectrum buffer (ny·nz·(nt/2+1) complex double) reused for the three components. With
-// `held_until_s`, the field holds only the samples up to that time of the record (plus one), the
-// same values as the whole record's (its spectra are the whole record's; only the transposes
-// and the memory shrink): a run that ends before the record does not store what it never reads.
-GeneratedTurbulence generate_turbulence(const WindParams& params, std::optional<double> held_until_s = std::nullopt);
+// spectrum buffer (ny·nz·(nt/2+1) complex double) reused for the three components. With `held`,
+// the field holds only the samples of the record a run reads — the same values as the whole
+// record's (its spectra are the whole record's; only the transposes and the memory shrink).
+struct HeldTimes {
+  double until_s = 0.0;         // the latest (shifted) time the run reads [s]
+  double before_start_s = 0.0;  // how far before 0 it reads, on the periodic record's end [s]
+};
+GeneratedTurbulence generate_turbulence(const WindParams& params, std::optional<HeldTimes> held = std::nullopt);
 
 }  // namespace fowtsim::wind
