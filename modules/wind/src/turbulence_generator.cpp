@@ -11,7 +11,6 @@
 
 #include "fowtsim/core/error.hpp"
 #include "fowtsim/core/fft.hpp"
-#include "fowtsim/core/huge_pages.hpp"
 #include "fowtsim/wind/coherent_sampler.hpp"
 #include "fowtsim/wind/iec_turbulence.hpp"
 #include "fowtsim/wind/tower_sampler.hpp"
@@ -98,7 +97,7 @@ GeneratedTurbulence generate_turbulence(const WindParams& params, std::optional<
   // Record sample of held row r.
   const auto record_row = [&f, n](int r) { return (f.nt_held == 0 || r < f.nt_held) ? r : n - f.nt_tail + (r - f.nt_held); };
   const std::size_t points = static_cast<std::size_t>(f.ny) * f.nz;
-  assign_on_huge_pages(f.grid, static_cast<std::size_t>(held) * points * 3, 0.0f);
+  f.grid.assign(static_cast<std::size_t>(held) * points * 3, 0.0f);
   f.n_tower = t.tower_points ? turbsim_tower_point_count(f.z_bottom_m, f.dz_m) : 0;
   f.tower.assign(static_cast<std::size_t>(held) * f.n_tower * 3, 0.0f);
 
@@ -121,8 +120,7 @@ GeneratedTurbulence generate_turbulence(const WindParams& params, std::optional<
   std::vector<Complex> x_block(points * kFrequencyBlock);
   double amplitudes[kFrequencyBlock];
   std::vector<float> series_block(kPointBlock * static_cast<std::size_t>(held));
-  std::vector<Complex> spectra;  // [point][bin]; bins 0 and past `top` stay zero
-  assign_on_huge_pages(spectra, points * bins, Complex{});
+  std::vector<Complex> spectra(points * bins);  // [point][bin]; bins 0 and past `top` stay zero
   // signal[t] = Σ_k Y_k e^{+i 2π k t / n} over the Hermitian-extended spectrum Y_0 … Y_{n/2}.
   InverseRealFft inverse(static_cast<std::size_t>(n));
   const auto inverse_dft = [&inverse, bins](const Complex* y) {
