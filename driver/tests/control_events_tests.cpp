@@ -18,6 +18,7 @@
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
 #include "run_request.hpp"
+#include "test_helpers.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -49,12 +50,6 @@ io::ChannelTable run_turbine(const std::string& name, double t_max, const std::s
                                    << extra;
   run_scene(run_request(dir / "deck.yaml", dir / "run", "h5"), nullptr);
   return io::read_channels(dir / "run.h5");
-}
-
-const std::vector<double>& column(const io::ChannelTable& t, const char* name) {
-  const auto i = t.find(name);
-  REQUIRE(i.has_value());
-  return t.columns[*i];
 }
 
 std::size_t row_at(const io::ChannelTable& t, double time) {

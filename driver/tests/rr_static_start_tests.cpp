@@ -15,6 +15,7 @@
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
 #include "run_request.hpp"
+#include "test_helpers.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -35,12 +36,6 @@ io::ChannelTable run_rr(const std::string& name, const std::string& deflection) 
       << "  degrees_of_freedom: {surge: false, sway: false, heave: false, roll: false, pitch: false, yaw: false, rotor_speed: held}\n";
   run_scene(run_request(dir / "deck.yaml", dir / "run", "h5"), nullptr);
   return io::read_channels(dir / "run.h5");
-}
-
-const std::vector<double>& column(const io::ChannelTable& t, const char* name) {
-  const auto i = t.find(name);
-  REQUIRE(i.has_value());
-  return t.columns[*i];
 }
 
 // Largest |x(t) − x(t + 2T)| over the first 2 s, T = 60/12.1 s the rotor's period (x at t + 2T

@@ -1,8 +1,9 @@
 #pragma once
-// Small helpers the driver tests share: the message of the exception a call must throw, and the
-// mean of a channel after a start-up transient.
+// Small helpers the driver tests share: the message of the exception a call must throw, a channel's
+// column, and the mean of a channel after a start-up transient.
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -12,6 +13,13 @@
 namespace fowtsim::driver {
 
 using testing::message_of;  // fowtsim/testing/exception_message.hpp
+
+// The column of channel `name` (the test fails if the table has none).
+inline const std::vector<double>& column(const io::ChannelTable& t, const char* name) {
+  const auto i = t.find(name);
+  REQUIRE(i.has_value());
+  return t.columns[*i];
+}
 
 // Mean of channel `name` over the rows at t ≥ t0 [s].
 inline double mean_after(const io::ChannelTable& t, const char* name, double t0) {

@@ -15,6 +15,7 @@
 #include "fowtsim/testing/skip.hpp"
 #include "run/run_scene.hpp"
 #include "run_request.hpp"
+#include "test_helpers.hpp"
 
 using namespace fowtsim;
 using namespace fowtsim::driver;
@@ -35,12 +36,6 @@ io::ChannelTable run_with_wind(const std::string& name, const std::string& wind)
                       << "wind: " << wind << "\n";
   run_scene(run_request(deck, dir / "run", std::nullopt), nullptr);
   return io::read_channels(dir / "run.h5");
-}
-
-const std::vector<double>& column(const io::ChannelTable& t, const char* name) {
-  const auto c = t.find(name);
-  REQUIRE(c);
-  return t.columns[*c];
 }
 
 }  // namespace
