@@ -89,6 +89,7 @@ std::string expected_duration(const std::string& name) {
   if (name == "stability") return "about 3 minutes (60 runs of 120 s of the default deck)";
   if (name == "riser") return "about 20 seconds (the four riser cases and a time-step study)";
   if (name == "startup") return "about 15 seconds (twice 600 s of the land-based turbine, seed 002 Sec. 5.6)";
+  if (name == "options") return "about 3 minutes (16 runs of the 600-s OC3 load case, rigid and Rayleigh-Ritz blades)";
   return "under a minute";
 }
 
@@ -201,7 +202,7 @@ int main(int argc, char** argv) {
                      "directory holding reference/ (default ../shared next to the repository: " + shared_dir + ")");
   std::vector<std::string> bench_cases;
   auto* bench = app.add_subcommand("bench", "benchmark run time against error");
-  bench->add_option("cases", bench_cases, "cases (default all): coupling, beam, hydro, waves, aero, multibody, startup, turbine, stability, riser, slender");
+  bench->add_option("cases", bench_cases, "cases (default all): coupling, beam, hydro, waves, aero, multibody, startup, options, turbine, stability, riser, slender");
   bench->add_option("--shared", shared_dir, "directory holding reference/ (default " + shared_dir + ")");
 
   std::string wind_deck, wind_out;

@@ -220,7 +220,7 @@ TEST_CASE("sweep case decks include the base deck and override only their own ke
   CHECK(scalar("wind", "shear_exponent") == "0.2");
   CHECK(deck.root.find("wind")->find("turbulence")->find("ny")->scalar == "31");
   CHECK(scalar("waves", "tp_s") == "10.0");
-  CHECK(scalar("simulation", "dt_s") == "0.0125");
+  CHECK(scalar("simulation", "dt_s") == "0.025");
   // A deck that did not change keeps its hash (resume compares it with the output's deck_hash).
   CHECK(write_case_decks(spec, cases, layout) == hashes);
 }

@@ -67,12 +67,15 @@ void SeaModules::evaluate(double t, const FrameMotion& pose, Data& d) const {
     hydro::Hydro::Input& in = d.hydro_input;
     in.platform = pose;
     in.time_s = t;
-    if (waterline_elevation_)
+    if (waterline_elevation_) {
+      const PeriodicStencil time = waterline_elevation_->stencil(t);
       for (std::size_t m = 0; m < waterline_elevation_->size(); ++m)
-        in.surface_elevation_m[static_cast<Eigen::Index>(m)] = waterline_elevation_->elevation(m, t);
+        in.surface_elevation_m[static_cast<Eigen::Index>(m)] = waterline_elevation_->elevation(m, time);
+    }
     if (kinematics_) {
+      const PeriodicStencil time = kinematics_->stencil(t);
       for (std::size_t i = 0; i < kinematics_->size(); ++i) {
-        const waves::WaveKinematics k = kinematics_->at(i, t);
+        const waves::WaveKinematics k = kinematics_->at(i, time);
         const auto c = static_cast<Eigen::Index>(i);
         in.fluid_velocity_m_s.col(c) = k.velocity_m_s;
         in.fluid_acceleration_m_s2.col(c) = k.acceleration_m_s2;

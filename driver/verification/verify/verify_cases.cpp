@@ -24,6 +24,7 @@ void bench_beam(std::FILE* out);
 void bench_aero(std::FILE* out);       // bench_turbine.cpp
 void bench_multibody(std::FILE* out);
 void bench_startup(std::FILE* out);  // bench_startup.cpp
+void bench_options(std::FILE* out);  // bench_options.cpp
 void bench_turbine(std::FILE* out);    // bench_flexible_turbine.cpp
 void bench_stability(std::FILE* out);  // bench_stability.cpp
 void bench_riser(std::FILE* out);      // bench_riser.cpp
@@ -112,7 +113,7 @@ std::filesystem::path default_shared_dir() {
 }
 
 std::vector<std::string> benchmark_case_names() {
-  return {"coupling", "beam", "hydro", "waves", "aero", "multibody", "startup", "turbine", "stability", "riser", "slender"};
+  return {"coupling", "beam", "hydro", "waves", "aero", "multibody", "startup", "options", "turbine", "stability", "riser", "slender"};
 }
 
 std::filesystem::path source_input(const std::string& relative) {
@@ -130,12 +131,13 @@ void run_benchmark_case(const std::string& name, std::FILE* out) {
   if (name == "aero") return bench_aero(out);
   if (name == "multibody") return bench_multibody(out);
   if (name == "startup") return bench_startup(out);
+  if (name == "options") return bench_options(out);
   if (name == "turbine") return bench_turbine(out);
   if (name == "stability") return bench_stability(out);
   if (name == "riser") return bench_riser(out);
   if (name == "slender") return bench_slender(out);
   if (name != "coupling") {
-    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody, startup, turbine, stability, riser, slender"}, fmt::format("unknown benchmark case '{}'", name));
+    throw InputError({"bench", {}, name, "known cases: coupling, beam, hydro, waves, aero, multibody, startup, options, turbine, stability, riser, slender"}, fmt::format("unknown benchmark case '{}'", name));
   }
   const ToyProblem problem = study_problem();
   constexpr double kTmax = 200.0;

@@ -243,15 +243,18 @@ double PrecomputedKinematics::interpolate_elevation(const Column& column, const 
          ts.weight[3] * eta[ts.index[3]];
 }
 
-double PrecomputedKinematics::elevation(std::size_t index, double t) const {
+double PrecomputedKinematics::elevation(std::size_t index, double t) const { return elevation(index, stencil(t)); }
+
+double PrecomputedKinematics::elevation(std::size_t index, const PeriodicStencil& ts) const {
   const Point& point = points_.at(index);
-  return interpolate_elevation(columns_[point.column], periodic_cubic_stencil(t, duration_s_, samples_));
+  return interpolate_elevation(columns_[point.column], ts);
 }
 
-WaveKinematics PrecomputedKinematics::at(std::size_t index, double t) const {
+WaveKinematics PrecomputedKinematics::at(std::size_t index, double t) const { return at(index, stencil(t)); }
+
+WaveKinematics PrecomputedKinematics::at(std::size_t index, const PeriodicStencil& ts) const {
   const Point& point = points_.at(index);
   const Column& column = columns_[point.column];
-  const PeriodicStencil ts = periodic_cubic_stencil(t, duration_s_, samples_);
   WaveKinematics out;
   out.elevation_m = interpolate_elevation(column, ts);
   double q[kQuantities] = {0.0, 0.0, 0.0, 0.0, 0.0};

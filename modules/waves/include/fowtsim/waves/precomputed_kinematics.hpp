@@ -62,6 +62,11 @@ class PrecomputedKinematics {
   WaveKinematics at(std::size_t index, double t_s) const;
   // η only.
   double elevation(std::size_t index, double t_s) const;
+  // The same at the time of `stencil(t_s)`: every point of one evaluation shares the time's stencil
+  // (the lookups above compute it per point). Bit-identical to at(index, t_s), elevation(index, t_s).
+  PeriodicStencil stencil(double t_s) const { return periodic_cubic_stencil(t_s, duration_s_, samples_); }
+  WaveKinematics at(std::size_t index, const PeriodicStencil& time) const;
+  double elevation(std::size_t index, const PeriodicStencil& time) const;
 
  private:
   struct Column {
