@@ -179,6 +179,25 @@ TurbineBlades::TurbineBlades(const io::ValidatedDeck& deck, const multibody::Mod
   nodal_deflections_ = keys.nodal_deflections;
   start_ = keys.start;
   interface_mass_ = keys.interface_mass == "on" || (keys.interface_mass == "auto" && model.params.tower.flexible);
+  for (const beam::NodeModel& n : params_.blade.nodes) {
+    blade_mass_kg_ += n.mass_kg;
+    blade_first_moment_f_ +=
+        n.mass_kg * (n.position_m + n.orientation * n.mass_offset_m - params_.blade.root_position_m);
+  }
+}
+
+Vec3 TurbineBlades::first_moment_h(const std::array<double, kBlades>& pitch_rad) const {
+  Vec3 s = Vec3::Zero();
+  for (int b = 0; b < kBlades; ++b)
+    s += blade_mass_kg_ * params_.root_h[b] +
+         params_.root_orientation_h[b] * (rotation_matrix(Vec3(0.0, 0.0, -pitch_rad[b])) * blade_first_moment_f_);
+  return s;
+}
+
+FlexibleRotor::HubLoad TurbineBlades::blade_weight_h(const FlexibleRotor::Data& r) const {
+  const Mat3 t_gh = r.shaft.orientation * rotation_matrix(Vec3(r.state.spin.rotor_azimuth_rad, 0.0, 0.0));
+  const Vec3 g_h = t_gh.transpose() * Vec3(0.0, 0.0, -params_.gravity_m_s2);
+  return {kBlades * blade_mass_kg_ * g_h, first_moment_h(r.state.pitch_rad).cross(g_h)};
 }
 
 void TurbineBlades::refresh_apparent_mass(Data& d, const RotorDemands& demands, double dt_large) {
@@ -207,14 +226,17 @@ void TurbineBlades::start(const ShaftMotion& shaft, const multibody::State& stat
                           const RotorDemands& demands, Data& d, RotorAero::Data* aero) {
   rotor_.start(shaft, state.rotor_azimuth_rad, state.rotor_speed_rad_s, pitch_rad, demands, start_, d.rotor, aero);
   d.held = d.rotor.last;
+  d.held += -1.0 * blade_weight_h(d.rotor);
   use_extrapolated_spin_profile(0.0, d);
 }
 
 void TurbineBlades::add_stage_loads(const multibody::ChainKinematics& chain, const Data& d,
                                     multibody::AppliedLoads& out) const {
   const Mat3& t_gh = chain.rotor.orientation;
-  out.rotor_force_N += t_gh * d.held.force_h_N;
-  out.rotor_moment_N_m += t_gh * d.held.moment_h_N_m;
+  // The held load, turned with the hub, and the blades' weight in its place now (header).
+  const Vec3 g(0.0, 0.0, -params_.gravity_m_s2);
+  out.rotor_force_N += t_gh * d.held.force_h_N + (kBlades * blade_mass_kg_) * g;
+  out.rotor_moment_N_m += t_gh * d.held.moment_h_N_m + (t_gh * first_moment_h(d.rotor.state.pitch_rad)).cross(g);
   if (!interface_mass_) return;
   Mat6 turn = Mat6::Zero();
   turn.topLeftCorner<3, 3>() = t_gh;
@@ -275,7 +297,12 @@ class TurbineBlades::Coupling {
   void advance_fast(double t, double dt, const SubstepMotion<ShaftMotion>& slow) {
     b_.rotor_.advance(t, dt, slow, demands_, d_.rotor, aero_);
   }
-  FlexibleRotor::HubLoad root_loads() const { return d_.rotor.last; }
+  // Without their weight, which the stages add at their own hub orientation (header).
+  FlexibleRotor::HubLoad root_loads() const {
+    FlexibleRotor::HubLoad l = d_.rotor.last;
+    l += -1.0 * b_.blade_weight_h(d_.rotor);
+    return l;
+  }
   void hold(const FlexibleRotor::HubLoad& average, double dt_large) {
     const SpinState& after = d_.rotor.state.spin;
     d_.mean_rotor_acceleration_rad_s2 = (after.rotor_speed_rad_s - d_.spin_before.rotor_speed_rad_s) / dt_large;
@@ -289,7 +316,7 @@ class TurbineBlades::Coupling {
     // what averaging buys a load that follows the fast motion matters less here than the lag — the
     // average is centred ΔT/2 before the next step starts, this sample at its start.
     const Vec6 remainder = d_.apparent_mass_h * shaft_acceleration_h(d_);
-    d_.held = d_.rotor.last;
+    d_.held = root_loads();
     d_.held.force_h_N += remainder.head<3>();
     d_.held.moment_h_N_m += remainder.tail<3>();
   }

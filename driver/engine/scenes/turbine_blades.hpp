@@ -32,6 +32,17 @@
 // A blade's share of M_h is refreshed after a large step in which its step matrix was rebuilt (the
 // same ageing: its deflection and spin; the first large step builds them all and is exchanged as
 // before), then the spin is condensed out of their sum again.
+//
+// The blades' weight is not held. Turned with the hub, a held load keeps its direction in the
+// rotating frame, which is right for what turns with the blades (aerodynamics, centrifugal and
+// elastic loads) but turns their weight with the hub by Ω times the sample's age: the held average
+// lags a whole large step, so the 522 kN of the NREL 5MW blades pushed sideways by ΩΔT = 1.5° at
+// ΔT = 20 ms (measured: the seed's validation deck, no wind, rotor held at 12.1 rpm — TwrBsMxt's
+// mean −1128 / −572 / −294 kN·m at ΔT = 20 / 10 / 5 ms, first order in ΔT, where it is zero). The
+// held load is the root load less the weight of the undeflected blades (mass and first moment,
+// pitched) at its sample's hub orientation, and every stage adds that weight at its own
+// orientation; the deflection's share of the weight's moment is left in the held part (second order:
+// the deflection times the lag).
 #include <array>
 #include <functional>
 #include <optional>
@@ -127,6 +138,12 @@ class TurbineBlades {
   static void use_step_spin_profile(double t, Data& d);          // the spin the blades took over the step from t
   void use_extrapolated_spin_profile(double t, Data& d) const;  // from the blades' spin at t, last step's mean acceleration
   static void copy_spin(const Data& d, multibody::State& state);
+  // The undeflected blades' weight on the hub at the fast side's state (hub frame at its azimuth,
+  // its pitch): force at the apex and moment about it, in h, under the structure's gravity (the
+  // scene's demands always carry gravity; the blades' own steps take the same value).
+  FlexibleRotor::HubLoad blade_weight_h(const FlexibleRotor::Data& r) const;
+  // Σ over the blades of their first mass moment about the apex, in h, at pitch `pitch_rad` [kg·m].
+  Vec3 first_moment_h(const std::array<double, kBlades>& pitch_rad) const;
   // The shaft's acceleration the blades see now, [a_apex; α_s] in h.
   static Vec6 shaft_acceleration_h(const Data& d);
 
@@ -140,6 +157,8 @@ class TurbineBlades {
   std::vector<double> gauges_eta_;  // span gauges (arclength fractions)
   bool nodal_deflections_ = false;  // B<b>N<nnn>_TD{x,y,z}r channels
   bool interface_mass_ = false;     // the multibody takes the blades' apparent mass (header)
+  double blade_mass_kg_ = 0.0;      // one undeflected blade: mass [kg]
+  Vec3 blade_first_moment_f_ = Vec3::Zero();  // and first mass moment about its root, in f [kg·m]
 };
 
 // Field lists (core/fields.hpp).
