@@ -5,7 +5,8 @@
 //
 // Per large step [T, T + ΔT], the one multi-rate exchange (coupling/multi_rate_scheduler.hpp):
 //  1. the multibody advances with the blades' root loads held from the previous large step, in
-//     the hub frame h and turned with the hub at every RK stage, and with the rotor spin
+//     the hub frame h and turned with the hub at every RK stage (less the blades' weight, which
+//     each stage adds at its own orientation: below), and with the rotor spin
 //     prescribed: extrapolated from the fast side's spin at T with its mean acceleration over the
 //     previous large step (the multibody never integrates the spin: DESIGN.md §4). With the
 //     interface mass (below) the held part is only the remainder R and the rotor's apparent mass
@@ -38,7 +39,7 @@
 // elastic loads) but turns their weight with the hub by Ω times the sample's age: the held average
 // lags a whole large step, so the 522 kN of the NREL 5MW blades pushed sideways by ΩΔT = 1.5° at
 // ΔT = 20 ms (measured: the seed's validation deck, no wind, rotor held at 12.1 rpm — TwrBsMxt's
-// mean −1128 / −572 / −294 kN·m at ΔT = 20 / 10 / 5 ms, first order in ΔT, where it is zero). The
+// mean −1128 / −572 / −294 kN·m at ΔT = 20 / 10 / 5 ms, first order in ΔT; −16 at all three now). The
 // held load is the root load less the weight of the undeflected blades (mass and first moment,
 // pitched) at its sample's hub orientation, and every stage adds that weight at its own
 // orientation; the deflection's share of the weight's moment is left in the held part (second order:
@@ -84,8 +85,9 @@ class TurbineBlades {
   // step and the spin handed to the multibody.
   struct Data {
     FlexibleRotor::Data rotor;
-    FlexibleRotor::HubLoad held;    // root loads averaged over the last large step (with the interface mass:
-                                    // the remainder R at its end), hub frame h, force at / moment about the apex
+    FlexibleRotor::HubLoad held;    // root loads less the blades' weight, averaged over the last large step (with
+                                    // the interface mass: the remainder R at its end), hub frame h, force at /
+                                    // moment about the apex
     std::array<Mat6, kBlades> blade_apparent_mass_h{};  // each blade's share of M_b (spin held), h, apex
     Mat6 apparent_mass_h = Mat6::Zero();  // M_h: the rotor's apparent mass on the shaft at the apex in h, the
                                           // spin condensed out (zero without the interface mass) [kg, kg·m, kg·m²]
