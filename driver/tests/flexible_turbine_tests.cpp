@@ -73,7 +73,7 @@ TEST_CASE("blades 1000x stiffer reproduce the rigid-blade turbine", "[verificati
   // separates the two models: the staggered exchange of the platform motion (root loads held over
   // ΔT = 20 ms, first order), the stiffened blades' residual flexibility (flap mode at 22 Hz,
   // deflections 1/1000 of the real blade's) and the sections' rotary inertia the line mass omits.
-  // Measured: RotSpeed 6.7e-4, PtfmSurge 1.2e-3, PtfmPitch 1.5e-3, TwrBsMyt 2.0e-2 (the tower-base
+  // Measured: RotSpeed 6.7e-4, PtfmSurge 1.0e-3, PtfmPitch 1.3e-3, TwrBsMyt 2.0e-2 (the tower-base
   // moment carries the held root loads directly); bounds ≈ 5–10× those.
   const struct {
     const char* name;
