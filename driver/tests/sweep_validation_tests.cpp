@@ -53,6 +53,11 @@ TEST_CASE("sweep --base-deck: the same cases and seeds on another deck", "[unit]
   CHECK_THAT(original, !Catch::Contains("_fast.yaml"));
   const auto seed_line = [](const std::string& text) { return text.substr(text.find("seed:"), text.find('\n', text.find("seed:")) - text.find("seed:")); };
   CHECK(seed_line(original) == seed_line(other));
+  // The folder of the --base-deck sweep is bound to its deck: the same sweep without it (a forgotten
+  // option, --collect say) stops before any case deck changes.
+  CHECK(run_fowtsim("sweep " + spec.string() + " --collect --output-dir " + (dir / "fast").string(), dir / "forgot.log") == 2);
+  CHECK_THAT(read_text(dir / "forgot.log"), Catch::Contains("holds the cases of the base deck") && Catch::Contains("--base-deck"));
+  CHECK(read_text(dir / "fast/decks/dlc12_ws12_s1.yaml") == other);
 }
 
 TEST_CASE("sweep: a case deck `fowtsim run` would reject stops --list and --slurm --dry-run and a local run before anything",

@@ -29,7 +29,7 @@ checkpoint_time() {
   "$PY" -c '
 import struct, sys
 b = open(sys.argv[1], "rb").read()
-assert b[:11] == b"FOWTSIMCHK4", "not a checkpoint"
+assert b[:11] == b"FOWTSIMCHK5", "not a checkpoint"
 step, dt = struct.unpack_from("<qd", b, 11 + 16 + 40)
 print(step * dt)' "$1"
 }

@@ -286,6 +286,7 @@ int run_sweep_command(const SweepRequest& request, std::FILE* out) {
   // One sweep per folder, before any file in it changes (folder_lock.hpp).
   const SweepFolderLock lock(layout.root, fmt::format("fowtsim sweep {} ({})", request.spec.string(), action_name(request.action)), out);
   layout.create_directories();
+  claim_base_deck(layout, spec.base_deck);
   if (spec.trim) trim_cases_in_place(out, request, spec, base, cases, layout, lock.descriptor());
   const std::vector<std::string> hashes = write_case_decks(spec, cases, layout);
   switch (request.action) {

@@ -21,6 +21,24 @@ void SweepLayout::create_directories() const {
   for (const char* sub : {"decks", "cases", "logs", "slurm"}) fs::create_directories(root / sub);
 }
 
+void claim_base_deck(const SweepLayout& layout, const fs::path& base_deck) {
+  const std::string current = fs::absolute(base_deck).lexically_normal().string();
+  const fs::path record = layout.base_deck_record();
+  if (std::ifstream in(record); in) {
+    std::string recorded;
+    std::getline(in, recorded);
+    if (!recorded.empty() && recorded != current)
+      throw InputError({"sweep", std::nullopt, "--base-deck", fmt::format("--base-deck {}, or another --output-dir", recorded)},
+                       fmt::format("{} holds the cases of the base deck {}; this sweep's base deck is {} (it would rewrite "
+                                   "every case deck and rerun every case on another model)",
+                                   layout.root.string(), recorded, current));
+    if (recorded == current) return;
+  }
+  std::ofstream out(record, std::ios::trunc);
+  out << current << '\n';
+  if (!out) throw InputError({"sweep", std::nullopt, "output_dir", "a writable folder"}, "cannot write " + record.string());
+}
+
 namespace {
 
 // Overrides as nested mappings, keys in first-set order; a later value of a key replaces it.

@@ -26,8 +26,15 @@ struct SweepLayout {
   std::filesystem::path exit_code(const std::string& c) const { return root / "logs" / (c + ".exit"); }
   std::filesystem::path slurm_dir() const { return root / "slurm"; }
   std::filesystem::path table_base() const { return root / "load_table"; }
+  std::filesystem::path base_deck_record() const { return root / "base_deck.txt"; }
   void create_directories() const;
 };
+
+// Binds the folder to the base deck its cases include: the first sweep into it records the deck
+// (absolute path); a later one with another base deck (a `--base-deck` forgotten or added) stops
+// with InputError before any case deck is rewritten — it would rerun every case on another model
+// and replace the load table. A folder from before the record is bound by its next sweep.
+void claim_base_deck(const SweepLayout& layout, const std::filesystem::path& base_deck);
 
 // The YAML text of a case deck: a comment saying what it is, `include:` of the base deck (relative
 // to the decks folder) and the case's overrides as nested mappings.

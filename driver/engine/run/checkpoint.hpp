@@ -160,10 +160,13 @@ struct CheckpointHeader {
   double dt_s = 0.0;    // the scene's step
 };
 
-// File layout (format FOWTSIMCHK4): the 11-byte magic, the payload's length and its FNV-1a 64
+// File layout (format FOWTSIMCHK5): the 11-byte magic, the payload's length and its FNV-1a 64
 // checksum (two uint64), then the payload: the header, the output base of the run that wrote it
-// (so a restart continues that output) and the scene's state through its field lists.
-inline constexpr std::string_view kCheckpointMagic = "FOWTSIMCHK4";
+// (so a restart continues that output) and the scene's state through its field lists. The format
+// number rises whenever a state field changes its layout or meaning, so that an older checkpoint is
+// refused rather than continued wrongly (5: the MBBT blades' held root loads no longer include the
+// blades' weight, scenes/turbine_blades.hpp).
+inline constexpr std::string_view kCheckpointMagic = "FOWTSIMCHK5";
 
 // Writes magic, length, checksum and `payload` to `file` complete or not at all.
 void write_checkpoint_file(const std::filesystem::path& file, const std::string& payload);

@@ -11,15 +11,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "compare/channel_compare.hpp"
 #include "fowtsim/io/readers.hpp"
-#include "fowtsim/post/damage_equivalent_load.hpp"
-#include "fowtsim/post/rainflow.hpp"
-#include "fowtsim/post/statistics.hpp"
 #include "run/run_scene.hpp"
 #include "verify/verify_cases.hpp"
 
@@ -37,47 +36,41 @@ struct Option {
   std::vector<std::string> channels;
 };
 
-struct Statistics {
-  post::ChannelStatistics s;
-  double del = 0.0;
-};
-
 struct Error {
   double value = 0.0;  // largest relative error [-]
   std::string where;   // channel and statistic
   double without_extremes = 0.0;  // largest of the means, spreads and DELs [-]
 };
 
-std::vector<Statistics> statistics(const io::ChannelTable& t, const std::vector<std::string>& channels) {
-  const std::vector<double> time = t.time();
-  const auto first = static_cast<std::size_t>(std::lower_bound(time.begin(), time.end(), kFrom - 1e-9) - time.begin());
-  const std::span<const double> window_time(time.data() + first, time.size() - first);
-  std::vector<Statistics> out;
-  for (const std::string& name : channels) {
-    const std::vector<double>& column = t.columns[t.find(name).value()];
-    const std::span<const double> values(column.data() + first, column.size() - first);
-    Statistics st{post::channel_statistics(window_time, values)};
-    const std::vector<post::RainflowCycle> cycles = post::rainflow_cycles(values);
-    post::FatigueParams wohler4;
-    wohler4.wohler_exponent = 4.0;
-    st.del = post::damage_equivalent_load(cycles, window_time.back() - window_time.front(), wohler4);
-    out.push_back(st);
-  }
-  return out;
+// Largest value of a channel from kFrom on.
+double window_max(const io::ChannelTable& t, const std::string& name) {
+  const std::vector<double>& time = t.time();
+  const std::vector<double>& v = t.columns[t.find(name).value()];
+  double m = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (time[i] >= kFrom - 1e-9) m = std::max(m, v[i]);
+  return m;
 }
 
-Error largest_error(const std::vector<Statistics>& ref, const std::vector<Statistics>& test, const std::vector<std::string>& channels) {
+// Means, spreads and DELs as `fowtsim compare --stats --wohler 4` over kFrom–600 s (its scales: the
+// mean against max(|mean|, std)), and the maximum against the reference's max − mean.
+Error largest_error(const io::ChannelTable& ref, const io::ChannelTable& test, const std::vector<std::string>& channels) {
   Error e;
-  auto consider = [&](double v, const std::string& where) {
+  auto consider = [&](double v, const std::string& where, bool extreme) {
     if (std::abs(v) > e.value) e.value = std::abs(v), e.where = where;
-    if (!where.ends_with(" max")) e.without_extremes = std::max(e.without_extremes, std::abs(v));
+    if (!extreme) e.without_extremes = std::max(e.without_extremes, std::abs(v));
   };
-  for (std::size_t i = 0; i < channels.size(); ++i) {
-    const post::ChannelStatistics &a = ref[i].s, &b = test[i].s;
-    consider((b.mean - a.mean) / std::max(std::abs(a.mean), a.std), channels[i] + " mean");
-    consider(b.std / a.std - 1.0, channels[i] + " std");
-    consider((b.max - a.max) / (a.max - a.mean), channels[i] + " max");
-    consider(test[i].del / ref[i].del - 1.0, channels[i] + " DEL");
+  CompareOptions options;
+  options.channels = channels;
+  options.window = std::pair(kFrom, 600.0);
+  options.statistics = true;
+  options.wohler_exponent = 4.0;
+  for (const ChannelComparison& c : compare_tables(ref, test, options).channels) {
+    consider(c.difference_percent[kMean] / 100.0, c.name + " mean", false);
+    consider(c.difference_percent[kStd] / 100.0, c.name + " std", false);
+    consider(c.difference_percent[kDel] / 100.0, c.name + " DEL", false);
+    const double ref_max = window_max(ref, c.name);
+    consider((window_max(test, c.name) - ref_max) / (ref_max - c.reference_statistics[kMean]), c.name + " max", true);
   }
   return e;
 }
@@ -116,8 +109,7 @@ void bench_options(std::FILE* out) {
   for (int group = 0; group < 2; ++group) {  // rigid, then Rayleigh–Ritz: each against its own reference
     const Option& stage = options[2 * group];
     run(stage, kReferenceStep, "reference");
-    const io::ChannelTable ref_table = io::read_channels(dir / "reference.out");
-    const std::vector<Statistics> ref = statistics(ref_table, stage.channels);
+    const io::ChannelTable ref = io::read_channels(dir / "reference.out");
     struct Row {
       const Option* option;
       double dt, loop_s, all_s;
@@ -128,7 +120,7 @@ void bench_options(std::FILE* out) {
       for (const double dt : {0.0125, 0.025, 0.05}) {
         const RunReport report = run(*o, dt, "test");
         rows.push_back({o, dt, report.wall_s, report.total_wall_s,
-                        largest_error(ref, statistics(io::read_channels(dir / "test.out"), o->channels), o->channels)});
+                        largest_error(ref, io::read_channels(dir / "test.out"), o->channels)});
         std::fprintf(stderr, ".");
       }
     std::fprintf(stderr, "\n");
