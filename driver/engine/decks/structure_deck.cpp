@@ -177,7 +177,7 @@ const DeckSection<multibody::Params>& structure_section() {
     DeckSection<Params> s;
     s.section("degrees_of_freedom", dofs, &Params::dofs, true, "DOF switches of the load case; absent = all free")
         .key("gravity_m_s2", Schema::number().at_least(0.0).default_value(9.80665).doc("gravity"), &Params::gravity_m_s2)
-        .key("max_step_s", Schema::number().greater_than(0.0).default_value(0.02).doc("largest internal RK4 step"), &Params::max_step_s)
+        .key("max_step_s", Schema::number().greater_than(0.0).default_value(0.02).doc("largest internal RK4 step [s] (with MBBT blades on the flexible tower: at least simulation.dt_s, one step per large step)"), &Params::max_step_s)
         .section("platform", platform, &Params::platform, false, "platform (rigid base body with the tower)")
         .section("tower", tower, &Params::tower, false, "rigid tower, merged into the base body")
         .section("nacelle", nacelle, &Params::nacelle, false, "nacelle on the yaw bearing")

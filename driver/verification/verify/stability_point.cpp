@@ -60,6 +60,8 @@ StabilityOutcome run_stability_point(const StabilityPoint& point, const std::fil
   std::ofstream(point_deck) << "include: [" << std::filesystem::absolute(deck).string() << "]\n"
                             << fmt::format("simulation: {{t_max_s: {}, dt_s: {}}}\n", t_max_s, point.dt_large_s)
                             << "output: {format: out, decimation: 1, channels: [PtfmPitch, RotSpeed]}\n"
+                            << fmt::format("structure: {{tower: {{flexible: {}}}, max_step_s: {}}}\n", point.flexible_tower,
+                                           point.flexible_tower ? point.dt_large_s : 0.02)
                             << fmt::format("blades: {{coupling: {}, substeps: {}}}\n", point.mode,
                                            std::lround(point.dt_large_s / point.dt_small_s));
   RunRequest request;

@@ -1,6 +1,6 @@
 #pragma once
 // One point of the coupling-step stability map (`fowtsim bench stability`): the default deck
-// (OC3 load case, flexible blades) run with one coupling mode and pair of steps, and what became
+// (OC3 load case, MBBT blades) run with one coupling mode, pair of steps and tower, and what became
 // of it.
 #include <filesystem>
 #include <string>
@@ -11,6 +11,9 @@ namespace fowtsim::driver {
 struct StabilityPoint {
   std::string mode;  // blades.coupling: multi_rate | predictor_corrector | single_rate
   double dt_large_s = 0.0, dt_small_s = 0.0;
+  // structure.tower.flexible. Rigid: the multibody in RK4 steps of ≤ 20 ms inside ΔT (the map of the
+  // blades' exchange as first measured); flexible: one RK4 step per ΔT, as the default deck.
+  bool flexible_tower = false;
 };
 
 enum class StabilityVerdict {
