@@ -154,6 +154,10 @@ int main(int argc, char** argv) {
   run->add_option("--checkpoint-every", checkpoint_every,
                   "write the scene's whole state to <output>.chk every T seconds (floating turbine, toy oscillators, slender body)")
       ->check(positive("a positive number of seconds"));
+  std::string turbulence_cache;
+  run->add_option("--turbulence-cache", turbulence_cache,
+                  "read a generated turbulence field from this folder when a run with the same wind stored it there, else "
+                  "generate and store it (what `fowtsim sweep` gives cases that share a wind seed)");
   run->add_option("--restart", restart,
                   "continue bit-identically from a checkpoint of the same deck; the output starts at its time")
       ->check(CLI::ExistingFile);
@@ -325,6 +329,7 @@ int main(int argc, char** argv) {
       if (matrix_age > 0) request.beam_matrix_max_age = matrix_age;
       if (checkpoint_every > 0) request.checkpoint_every_s = checkpoint_every;
       if (!restart.empty()) request.restart_path = restart;
+      if (!turbulence_cache.empty()) request.turbulence_cache = turbulence_cache;
       return run_command(request);
     }
     if (*compare) {

@@ -51,6 +51,10 @@ TEST_CASE("local sweep: 12 cases in 2 processes, a failing case reported, resuma
   CHECK_THAT(first_log, Catch::Contains("12 completed of 13"));
   CHECK_THAT(first_log, Catch::Contains("failed           blowup (exit 3): numerical failure:"));
   CHECK_THAT(first_log, Catch::Contains("throughput"));
+  // The yaw variants of a realisation share its wind seed and its field, generated once; the
+  // sweep's folder of fields is gone once they have all run.
+  CHECK_THAT(first_log, Catch::Contains("turbulence       6 field(s) shared by 12 case(s), each generated once"));
+  CHECK_FALSE(std::filesystem::exists(out / "turbulence"));
 
   const auto rows = csv_rows(out / "load_table.csv");
   REQUIRE(rows.size() == 1 + kGoodCases + 1);
@@ -58,6 +62,14 @@ TEST_CASE("local sweep: 12 cases in 2 processes, a failing case reported, resuma
   const auto column = [&](const std::string& name) {
     return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
   };
+  const auto seed_of = [&](const std::string& name) {
+    for (const auto& row : rows)
+      if (row[column("case")] == name) return row[column("wind_seed")];
+    return std::string("not found");
+  };
+  CHECK(seed_of("dlc12_ws12_yaw0_s1") == seed_of("dlc12_ws12_yaw8_s1"));
+  CHECK(seed_of("dlc12_ws12_yaw0_s1") != seed_of("dlc12_ws12_yaw0_s2"));
+  CHECK(seed_of("dlc12_ws12_yaw0_s1") != seed_of("dlc12_ws16_yaw0_s1"));
   for (std::size_t r = 1; r <= kGoodCases; ++r) {
     CHECK(rows[r][column("state")] == "completed");
     CHECK_FALSE(rows[r][column("TwrBsMyt_max[kN-m]")].empty());
@@ -81,13 +93,16 @@ TEST_CASE("local sweep: 12 cases in 2 processes, a failing case reported, resuma
   CHECK(std::filesystem::last_write_time(layout.output("dlc12_ws12_yaw8_s2")) == written_at);
   CHECK(read_text(out / "load_table.csv") == first_table);
 
-  // A case rerun alone from its deck gives the same numbers, bit for bit, and the same deck hash.
-  const std::filesystem::path alone = dir / "alone.h5";
-  REQUIRE(run_fowtsim("run " + layout.deck("dlc12_ws16_yaw0_s1").string() + " -o " + alone.string(), dir / "alone.log") == 0);
-  const io::ChannelTable swept = io::read_hdf5_channels(layout.output("dlc12_ws16_yaw0_s1"));
-  const io::ChannelTable single = io::read_hdf5_channels(alone);
-  REQUIRE(swept.names == single.names);
-  for (std::size_t c = 0; c < swept.columns.size(); ++c) CHECK(swept.columns[c] == single.columns[c]);
-  CHECK(driver::sweep::read_run_attributes(alone).deck_hash ==
-        driver::sweep::read_run_attributes(layout.output("dlc12_ws16_yaw0_s1")).deck_hash);
+  // A case rerun alone from its deck (generating its own field) gives the same numbers, bit for bit,
+  // and the same deck hash: the yaw-0 case generated the shared field in the sweep (the yaw-0 cases
+  // run first), the yaw-8 case read it.
+  for (const std::string name : {"dlc12_ws16_yaw0_s1", "dlc12_ws16_yaw8_s1"}) {
+    const std::filesystem::path alone = dir / (name + "_alone.h5");
+    REQUIRE(run_fowtsim("run " + layout.deck(name).string() + " -o " + alone.string(), dir / "alone.log") == 0);
+    const io::ChannelTable swept = io::read_hdf5_channels(layout.output(name));
+    const io::ChannelTable single = io::read_hdf5_channels(alone);
+    REQUIRE(swept.names == single.names);
+    for (std::size_t c = 0; c < swept.columns.size(); ++c) CHECK(swept.columns[c] == single.columns[c]);
+    CHECK(driver::sweep::read_run_attributes(alone).deck_hash == driver::sweep::read_run_attributes(layout.output(name)).deck_hash);
+  }
 }

@@ -151,12 +151,27 @@ int run_local(std::FILE* out, const SweepRequest& request, const SweepSpec& spec
              cases.size() - pending.size(), pending.size(), request.jobs);
   if (const std::size_t removed = remove_dead_temporaries(layout))
     fmt::print(out, "  cleaned          {} temporary output(s) of runs killed earlier\n", removed);
+  // Cases of one wind seed (the variants of a realisation that leave the field alone: yaw, fault
+  // time, sea) share its generated field through a folder of the sweep, removed when the last of them
+  // has ended (turbulence_cache.hpp): each field is generated once and at most one per open seed sits on disk.
+  std::map<std::uint64_t, std::size_t> sharing;  // wind seed → pending cases with it
+  for (const std::size_t i : pending)
+    if (cases[i].wind_seed) ++sharing[*cases[i].wind_seed];
+  std::erase_if(sharing, [](const auto& s) { return s.second < 2; });
+  std::map<std::string, std::uint64_t> shared_seed;  // case → its shared wind seed
   std::vector<CaseCommand> commands;
   for (const std::size_t i : pending) {
     const std::string& name = cases[i].name;
     std::filesystem::remove(layout.exit_code(name));
     commands.push_back({name, {"run", layout.deck(name).string(), "-o", layout.output(name).string()}, layout.log(name), case_length_s});
+    if (cases[i].wind_seed && sharing.contains(*cases[i].wind_seed)) {
+      shared_seed[name] = *cases[i].wind_seed;
+      std::vector<std::string>& arguments = commands.back().arguments;
+      arguments.insert(arguments.end(), {"--turbulence-cache", layout.turbulence(*cases[i].wind_seed).string()});
+    }
   }
+  if (!sharing.empty())
+    fmt::print(out, "  turbulence       {} field(s) shared by {} case(s), each generated once\n", sharing.size(), shared_seed.size());
 
   const bool terminal = isatty(fileno(out)) != 0;
   const InterruptHandlers handlers;
@@ -166,6 +181,10 @@ int run_local(std::FILE* out, const SweepRequest& request, const SweepSpec& spec
       request.executable.empty() ? own_executable() : request.executable, commands, request.jobs,
       [&](const CaseExit& e) {
         write_exit_code(layout, e.name, e.exit_code);
+        if (const auto s = shared_seed.find(e.name); s != shared_seed.end() && --sharing[s->second] == 0) {
+          std::error_code ignored;
+          std::filesystem::remove_all(layout.turbulence(s->second), ignored);
+        }
         if (e.exit_code != 0) return;
         ++completed_now;
         completed_cpu_s += e.cpu_s;
@@ -183,6 +202,8 @@ int run_local(std::FILE* out, const SweepRequest& request, const SweepSpec& spec
       },
       lock_descriptor);
   if (terminal) fmt::print(out, "\n");
+  std::error_code ignored;
+  std::filesystem::remove(layout.turbulence_dir(), ignored);  // only if empty: an interrupted sweep keeps its fields
   if (report.interrupted_by)
     fmt::print(out, "  interrupted      by {}: finished cases are kept, the others run on the next `fowtsim sweep`\n",
                signal_name(report.interrupted_by));

@@ -18,6 +18,13 @@ std::uint64_t case_seed(const std::string& canonical_case, const std::string& st
 
 namespace {
 
+// Whether a factor's key changes the turbulent field itself (its seed, spectrum, grid or mean
+// profile); the wind direction, upflow and the deterministic events act on how the field is used.
+bool shapes_turbulence(const std::string& key_path) {
+  return key_path.starts_with("wind.") && key_path != "wind.direction_deg" && key_path != "wind.upflow_deg" &&
+         !key_path.starts_with("wind.event.");
+}
+
 const io::DeckNode* find_path(const io::DeckNode& root, std::initializer_list<const char*> keys) {
   const io::DeckNode* node = &root;
   for (const char* key : keys) {
@@ -182,10 +189,12 @@ std::vector<SweepCase> expand_cases(const SweepSpec& spec, const BaseDeckFacts& 
 
         std::string name = g.name;
         std::string canonical = spec.name + "|" + g.name;
+        std::string wind_canonical = canonical;  // the factors that shape the turbulent field
         for (std::size_t a = 0; a < axes.size(); ++a) {
           for (const PresetKey& key : axes[a].keys[index[a]]) {
             deck.set(key, axes[a].source);
             canonical += "|" + key.key_path + "=" + key.yaml_value;
+            if (shapes_turbulence(key.key_path)) wind_canonical += "|" + key.key_path + "=" + key.yaml_value;
           }
           // Wind speeds always name the case; other factors only when they vary in the group.
           const std::string& piece = axes[a].names[index[a]];
@@ -195,6 +204,7 @@ std::vector<SweepCase> expand_cases(const SweepSpec& spec, const BaseDeckFacts& 
           }
         }
         canonical += fmt::format("|realisation={}", r);
+        wind_canonical += fmt::format("|realisation={}", r);
         if (g.seeds > 1) name += fmt::format("_s{}", r);
 
         const std::optional<std::string> speed_text = deck.value_of("wind.speed_m_s");
@@ -202,7 +212,9 @@ std::vector<SweepCase> expand_cases(const SweepSpec& spec, const BaseDeckFacts& 
 
         const std::string wind_model = deck.value_of("wind.model").value_or(base.wind_model);
         if (wind_model == "turbulent") {
-          c.wind_seed = case_seed(canonical, "wind");
+          // One realisation of the wind for all the variants that do not change it (yaw, fault
+          // time, sea): they share a field, as a basis built on TurbSim files shares its files.
+          c.wind_seed = case_seed(wind_canonical, "wind");
           deck.set("wind.turbulence.seed", std::to_string(*c.wind_seed));
           // No periodic repeat inside the run: the box must also pass the rotor first, (X0 + reach)/U
           // with X0 half the grid's width (wind/record_length.hpp); the whole width bounds it, since

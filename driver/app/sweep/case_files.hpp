@@ -7,6 +7,7 @@
 //   OUTPUT_DIR/logs/CASE.log      what `fowtsim run` printed;  logs/CASE.exit  its exit code
 //   OUTPUT_DIR/slurm/             the job-array script, its case list and Slurm's logs
 //   OUTPUT_DIR/load_table.{h5,csv,md}
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -27,6 +28,9 @@ struct SweepLayout {
   std::filesystem::path slurm_dir() const { return root / "slurm"; }
   std::filesystem::path table_base() const { return root / "load_table"; }
   std::filesystem::path base_deck_record() const { return root / "base_deck.txt"; }
+  // Generated turbulence fields the cases of one wind seed share while they run (run --turbulence-cache).
+  std::filesystem::path turbulence_dir() const { return root / "turbulence"; }
+  std::filesystem::path turbulence(std::uint64_t wind_seed) const { return turbulence_dir() / std::to_string(wind_seed); }
   void create_directories() const;
 };
 

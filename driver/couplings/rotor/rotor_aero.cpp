@@ -8,13 +8,15 @@
 #include "fowtsim/multibody/blade_body.hpp"
 #include "fowtsim/multibody/tower_body.hpp"
 #include "fowtsim/wind/turbulence_generator.hpp"
+#include "rotor/turbulence_cache.hpp"
 
 namespace fowtsim::driver {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p, RotorAero::WindSetUp setup, std::optional<double> run_until_s) {
+std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p, RotorAero::WindSetUp setup, std::optional<double> run_until_s,
+                                                 const std::optional<std::filesystem::path>& turbulence_cache) {
   if (p.model == wind::WindModel::turbulent) {
     if (setup == RotorAero::WindSetUp::check) {
       wind::validate(p);  // what generate_turbulence checks of its input
@@ -34,6 +36,7 @@ std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p, Roto
       const double reach_s = p.turbulence.width_m / p.speed_m_s;
       held = wind::HeldTimes{*run_until_s + reach_s, reach_s};
     }
+    if (turbulence_cache) return std::make_shared<wind::WindField>(p, std::make_shared<wind::FullField>(cached_turbulence(*turbulence_cache, grid_only, held)));
     return std::make_shared<wind::WindField>(p, std::make_shared<wind::FullField>(wind::generate_turbulence(grid_only, held).field));
   }
   if (p.model != wind::WindModel::bts) return std::make_shared<wind::WindField>(p);
@@ -45,8 +48,8 @@ std::shared_ptr<const wind::WindField> make_wind(const wind::WindParams& p, Roto
 }  // namespace
 
 RotorAero::RotorAero(aero::Params params, const wind::WindParams& wind, const multibody::Params& structure, WindSetUp setup,
-                     std::optional<double> run_until_s)
-    : params_(std::move(params)), wind_params_(wind), wind_(make_wind(wind, setup, run_until_s)) {
+                     std::optional<double> run_until_s, const std::optional<std::filesystem::path>& turbulence_cache)
+    : params_(std::move(params)), wind_params_(wind), wind_(make_wind(wind, setup, run_until_s, turbulence_cache)) {
   // ElastoDyn signs in the structure (PreCone < 0 cones upwind), the aero convention + upwind.
   hub_frame_rotor_.precone_rad = -structure.rotor.precone_deg * kDegree;
   hub_frame_rotor_.hub_radius_m = structure.rotor.hub_radius_m;

@@ -4,6 +4,7 @@
 // rotor apex and a moment about it for the multibody. Node geometry follows the chain exactly:
 // the blade table is placed once in the hub frame (aero::place_rigid_rotor with a hub at rest),
 // then moved with the hub's pose, velocity and angular velocity at every evaluation.
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <span>
@@ -46,9 +47,12 @@ class RotorAero {
   // The rotor of `params` in the wind of `wind` (a turbulent field is generated here, a TurbSim
   // file read); the rotor geometry (precone, hub radius) comes from the structure. Set up with
   // WindSetUp::check, a rotor in turbulent wind has no field: only params() and wind_params() serve.
-  // With `run_until_s`, a generated field holds only the samples a run to that time reaches.
+  // With `run_until_s`, a generated field holds only the samples a run to that time reaches; with
+  // `turbulence_cache`, it is read from that folder when another run stored it there, else generated
+  // and stored (turbulence_cache.hpp).
   RotorAero(aero::Params params, const wind::WindParams& wind, const multibody::Params& structure,
-            WindSetUp setup = WindSetUp::run, std::optional<double> run_until_s = std::nullopt);
+            WindSetUp setup = WindSetUp::run, std::optional<double> run_until_s = std::nullopt,
+            const std::optional<std::filesystem::path>& turbulence_cache = std::nullopt);
   Data make_data() const;
 
   // Loads at time t on the rotor in the chain configuration `chain`, blade pitch `pitch_rad` (one

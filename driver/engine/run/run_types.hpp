@@ -21,6 +21,8 @@ struct RunRequest {
   std::optional<double> checkpoint_every_s;          // --checkpoint-every: write <output>.chk every T [s]
   std::optional<std::filesystem::path> restart_path; // --restart: continue from this checkpoint
   std::vector<std::string> deck_settings;            // --set key.path=value, in order (io::apply_settings)
+  std::optional<std::filesystem::path> turbulence_cache;  // --turbulence-cache: a folder of generated wind
+                                                     // fields that runs share (rotor/turbulence_cache.hpp)
 };
 
 struct RunReport {

@@ -151,7 +151,9 @@ Schema floating_scene_schema() {
   });
 }
 
-FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup, std::optional<double> run_until_s) : structure_(structure_params(deck.section("structure"))) {
+FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup, std::optional<double> run_until_s,
+                             const std::optional<std::filesystem::path>& turbulence_cache)
+    : structure_(structure_params(deck.section("structure"))) {
   if (deck.has("blades")) TurbineBlades::configure(structure_);
   std::optional<aero::Params> aero;
   if (deck.has("aero")) aero = aero_params(deck);
@@ -170,7 +172,8 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup, std::op
   sea_.emplace(deck, platform_motion(initial), dt_s_);
   if (deck.has("aero")) {
     rotor_.emplace(std::move(*aero), wind_params(deck.section("wind")), structure_,
-                   setup == SetUp::check ? RotorAero::WindSetUp::check : RotorAero::WindSetUp::run, run_until_s);
+                   setup == SetUp::check ? RotorAero::WindSetUp::check : RotorAero::WindSetUp::run, run_until_s,
+                   turbulence_cache);
     // One rotor, two descriptions: the aero blade table and the structure must agree on it.
     const aero::Params& ap = rotor_->params();
     if (ap.number_of_blades != structure_.rotor.blade_count)
@@ -635,7 +638,7 @@ std::string FloatingScene::coupling_description() const {
 RunReport run_floating_scene(const RunRequest& request, const ProgressCallback& progress) {
   const io::ValidatedDeck deck = io::read_deck(floating_scene_schema(), request.deck_path, request.deck_settings);
   const double t_end_s = request.t_max_s.value_or(simulation_keys(deck).t_max_s);
-  FloatingScene scene(deck, FloatingScene::SetUp::run, t_end_s);
+  FloatingScene scene(deck, FloatingScene::SetUp::run, t_end_s, request.turbulence_cache);
   FloatingState state = scene.make_state();
   FixedStepScene run;
   run.written = scene.written();

@@ -14,6 +14,7 @@
 #include <array>
 #include <limits>
 #include <memory>
+#include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
@@ -82,8 +83,10 @@ class FloatingScene {
   // all but a turbulent wind field (RotorAero::WindSetUp): a scene to check a deck with, not to run.
   // `run_until_s`: where the run ends, if known; a generated wind field then holds only the part
   // the run reaches (the same values: the record is still the deck's whole duration).
+  // `turbulence_cache`: a folder of generated fields runs share (run --turbulence-cache).
   enum class SetUp { run, check };
-  explicit FloatingScene(const io::ValidatedDeck& deck, SetUp setup = SetUp::run, std::optional<double> run_until_s = std::nullopt);
+  explicit FloatingScene(const io::ValidatedDeck& deck, SetUp setup = SetUp::run, std::optional<double> run_until_s = std::nullopt,
+                         const std::optional<std::filesystem::path>& turbulence_cache = std::nullopt);
   FloatingScene(const FloatingScene&) = delete;  // the blades and the loads refer to members
   FloatingScene& operator=(const FloatingScene&) = delete;
   ~FloatingScene();
