@@ -3,8 +3,8 @@
 #include <unistd.h>
 
 #include <cstdint>
-#include <cstring>
 #include <fstream>
+#include <optional>
 #include <system_error>
 
 #include <fmt/format.h>

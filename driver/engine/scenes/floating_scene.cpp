@@ -202,8 +202,8 @@ FloatingScene::FloatingScene(const io::ValidatedDeck& deck, SetUp setup, std::op
   if (deck.has("blades")) blades_.emplace(deck, model_, rotor_ ? &*rotor_ : nullptr);
   // The blades' interface mass is matched to one RK4 step of the multibody per large step (h = 0.586 ΔT,
   // the held remainder sampled at the step's end): RK4 substeps inside the large step break that match
-  // (measured on the default deck: ΔT 40 ms in 20-ms substeps diverged at 488 s; in one step 40, 50
-  // and 60 ms run the 600 s).
+  // (measured on the default deck: ΔT 40 ms in 20-ms substeps diverged at 488 s; in one step every ΔT
+  // from 25 to 100 ms runs the 600 s, `fowtsim bench stability`).
   if (blades_ && blades_->interface_mass() && structure_.max_step_s < dt_s_ * (1.0 - 1e-9))
     throw InputError({"floating", std::nullopt, "structure.max_step_s", fmt::format("≥ simulation.dt_s = {:.6g} s", dt_s_)},
                      where(deck, "structure.max_step_s") +
