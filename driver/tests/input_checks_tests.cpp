@@ -133,11 +133,11 @@ TEST_CASE("MBBT blades on the flexible tower: a split large step and a held roto
   // and a held rotor speed hands the blades' torque about the shaft to the tower top explicitly.
   const auto dir = testing::scratch_dir("input_checks_mbbt_flexible_tower");
   const std::string deck = "oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml";
-  CHECK_THAT(input_error_of(deck_over(dir, deck, "simulation: {dt_s: 0.04}\n"), dir),
+  CHECK_THAT(input_error_of(deck_over(dir, deck, "simulation: {dt_s: 0.04}\nstructure: {tower: {flexible: true}}\n"), dir),
              Catch::Contains("structure.max_step_s: 0.025 s splits each large step of 0.04 s") &&
                  Catch::Contains("one RK4 step per large step"));
   CHECK(nothing_written(dir));
-  CHECK_THAT(input_error_of(deck_over(dir, deck, "structure: {degrees_of_freedom: {rotor_speed: held}}\n"), dir),
+  CHECK_THAT(input_error_of(deck_over(dir, deck, "structure: {tower: {flexible: true}, degrees_of_freedom: {rotor_speed: held}}\n"), dir),
              Catch::Contains("a held rotor speed with MBBT blades on the flexible tower is not supported"));
   CHECK(nothing_written(dir));
   // The same keys on the rigid tower run as before: checked by the stability map's points and the

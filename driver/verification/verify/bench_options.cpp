@@ -1,7 +1,7 @@
 // `fowtsim bench options` (issues 24, 28): run time against error of the large time step for the
 // structural options — rigid blades and Rayleigh–Ritz blades on the flexible tower, each with the
-// BEM inductions solved at every RK4 stage or once per large step, and the MBBT blades on the
-// flexible tower (the default deck: the multibody's step ΔT, four blade steps in each) — on the
+// BEM inductions solved at every RK4 stage or once per large step, and the MBBT blades (the default
+// deck: the multibody's step ΔT, four blade steps in each) on the rigid and the flexible tower — on the
 // shipped OC3 load-case decks (600 s, IEC NTM 12 m/s, JONSWAP sea, controller). The error is what a
 // load basis reads: over 60–600 s, per channel, the mean (against max(|mean|, std)), the standard
 // deviation, the maximum (against max − mean) and the DEL (Wöhler m = 4) — the largest of them over
@@ -35,6 +35,7 @@ struct Option {
   const char* deck;  // under inputs/
   const char* induction;  // aero.induction (stage | step); nullptr: the MBBT blades' own coupling
   std::vector<std::string> channels;
+  std::vector<std::string> settings = {};  // further --set keys
 };
 
 struct Error {
@@ -93,7 +94,9 @@ void bench_options(std::FILE* out) {
        {"rigid blades, induction step", "oc3_hywind/turbine_ntm_12mps_irregular.yaml", "step", rigid_channels}},
       {{"RR blades + flexible tower", "oc3_hywind/turbine_rr_ntm_12mps_irregular.yaml", "stage", rr_channels},
        {"  the same, induction step", "oc3_hywind/turbine_rr_ntm_12mps_irregular.yaml", "step", rr_channels}},
-      {{"MBBT blades + flexible tower", "oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml", nullptr, mbbt_channels}}};
+      {{"MBBT blades (default deck)", "oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml", nullptr, rr_channels}},
+      {{"MBBT blades + flexible tower", "oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml", nullptr, mbbt_channels,
+        {"structure.tower.flexible=true"}}}};
   auto run = [&](const Option& o, double dt, const std::string& base) {
     RunRequest r;
     r.deck_path = source_input(o.deck);
@@ -104,6 +107,7 @@ void bench_options(std::FILE* out) {
     r.deck_settings = {fmt::format("simulation.dt_s={}", dt), fmt::format("structure.max_step_s={}", dt),
                        fmt::format("output.decimation={}", std::lround(kOutputStep / dt)), "output.channels=[" + list + "]"};
     if (o.induction) r.deck_settings.push_back(std::string("aero.induction=") + o.induction);
+    for (const std::string& s : o.settings) r.deck_settings.push_back(s);
     return run_scene(r, nullptr);
   };
 
@@ -144,20 +148,19 @@ void bench_options(std::FILE* out) {
                   " the MBBT blades take four blade steps per ΔT; one run on this machine)\n");
 
   // Issue 28's goals for the default deck, run as a user runs it (every channel, HDF5): as shipped
-  // (MBBT blades on the flexible tower) and on the rigid tower, whose cost the flexible tower may
-  // exceed by 10 %.
+  // (MBBT blades on the rigid tower) and on the flexible tower, which may cost 10 % more.
   fmt::print(out, "\nThe default deck as a user runs it (600 s, every channel, HDF5), × real time loop / all:\n");
   double loop[2] = {0, 0};
-  for (const bool flexible : {true, false}) {
+  for (const bool flexible : {false, true}) {
     RunRequest r;
     r.deck_path = source_input("oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml");
     r.output_base = dir / "default";
-    if (!flexible) r.deck_settings = {"structure.tower.flexible=false"};
+    if (flexible) r.deck_settings = {"structure.tower.flexible=true"};
     const RunReport report = run_scene(r, nullptr);
     loop[flexible ? 0 : 1] = report.wall_s;
     fmt::print(out, "  {:<44} {:>6.1f} / {:>5.1f}   (goal 100 / 90{})\n",
-               flexible ? "as shipped (MBBT blades, flexible tower)" : "on the rigid tower", 600.0 / report.wall_s,
-               600.0 / report.total_wall_s, flexible ? " on the rigid tower, the flexible ≤ 10 % slower" : "");
+               flexible ? "on the flexible tower" : "as shipped (MBBT blades, rigid tower)", 600.0 / report.wall_s,
+               600.0 / report.total_wall_s, flexible ? ", or ≤ 10 % slower than the rigid tower" : "");
   }
   fmt::print(out, "  the flexible tower costs {:+.1f} % in the time loop\n", 100.0 * (loop[0] / loop[1] - 1.0));
   std::filesystem::remove_all(dir);
