@@ -4,7 +4,7 @@
 // deck: the multibody's step ΔT, four blade steps in each) on the rigid and the flexible tower — on the
 // shipped OC3 load-case decks (600 s, IEC NTM 12 m/s, JONSWAP sea, controller). The error is what a
 // load basis reads: over 60–600 s, per channel, the mean (against max(|mean|, std)), the standard
-// deviation, the maximum (against max − mean) and the DEL (Wöhler m = 4) — the largest of them over
+// deviation, the maximum (against max − mean) and the DEL (Wöhler m = 4; not of the pitch angle) — the largest of them over
 // the channels, relative to the same structural model at ΔT = 6.25 ms (inductions solved at every
 // stage). Outputs every 50 ms in every run, so extremes are sampled alike. Then the Pareto front.
 // Printed, never asserted: one run on this machine, compare as ratios.
@@ -70,7 +70,10 @@ Error largest_error(const io::ChannelTable& ref, const io::ChannelTable& test, c
   for (const ChannelComparison& c : compare_tables(ref, test, options).channels) {
     consider(c.difference_percent[kMean] / 100.0, c.name + " mean", false);
     consider(c.difference_percent[kStd] / 100.0, c.name + " std", false);
-    consider(c.difference_percent[kDel] / 100.0, c.name + " DEL", false);
+    // Not the pitch angle's DEL: it sits at its 0° floor with ±0.01° of jitter, and whether rainflow
+    // closes a 9° cycle there turns on which valley is lower (measured: 1.21° against 2.36° for two
+    // runs whose halves, 60–300 and 300–600 s, agree within 0.1 %). It is no load either.
+    if (!c.name.starts_with("BldPitch")) consider(c.difference_percent[kDel] / 100.0, c.name + " DEL", false);
     const double ref_max = window_max(ref, c.name);
     consider((window_max(test, c.name) - ref_max) / (ref_max - c.reference_statistics[kMean]), c.name + " max", true);
   }
@@ -86,6 +89,8 @@ void bench_options(std::FILE* out) {
                                                    "TwrBsMyt",  "TwrBsMxt",  "YawBrMyp",  "FAIRTEN1", "NcIMUTAxs"};
   std::vector<std::string> rr_channels = rigid_channels;
   for (const char* c : {"RootMyc1", "OoPDefl1", "TTDspFA"}) rr_channels.emplace_back(c);
+  std::vector<std::string> mbbt_rigid_tower_channels = rigid_channels;
+  for (const char* c : {"RootMyc1", "OoPDefl1"}) mbbt_rigid_tower_channels.emplace_back(c);
   std::vector<std::string> mbbt_channels = rr_channels;
   mbbt_channels.emplace_back("TTDspSS");
   // Groups of options, each against its first option at kReferenceStep.
@@ -94,7 +99,7 @@ void bench_options(std::FILE* out) {
        {"rigid blades, induction step", "oc3_hywind/turbine_ntm_12mps_irregular.yaml", "step", rigid_channels}},
       {{"RR blades + flexible tower", "oc3_hywind/turbine_rr_ntm_12mps_irregular.yaml", "stage", rr_channels},
        {"  the same, induction step", "oc3_hywind/turbine_rr_ntm_12mps_irregular.yaml", "step", rr_channels}},
-      {{"MBBT blades (default deck)", "oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml", nullptr, rr_channels}},
+      {{"MBBT blades (default deck)", "oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml", nullptr, mbbt_rigid_tower_channels}},
       {{"MBBT blades + flexible tower", "oc3_hywind/turbine_flexible_ntm_12mps_irregular.yaml", nullptr, mbbt_channels,
         {"structure.tower.flexible=true"}}}};
   auto run = [&](const Option& o, double dt, const std::string& base) {
@@ -112,7 +117,7 @@ void bench_options(std::FILE* out) {
   };
 
   fmt::print(out, "OC3 load case, 600 s (IEC NTM 12 m/s, JONSWAP Hs 6 m, OC3 controller), the structural options\n");
-  fmt::print(out, "error: largest over the channels of Δmean/max(|mean|, std), Δstd/std, Δmax/(max − mean), ΔDEL/DEL (m = 4), 60–600 s,\n"
+  fmt::print(out, "error: largest over the channels of Δmean/max(|mean|, std), Δstd/std, Δmax/(max − mean), ΔDEL/DEL (m = 4; not BldPitch), 60–600 s,\n"
                   "against the same structure at ΔT = 6.25 ms with the inductions solved at every stage\n");
   fmt::print(out, "{:<30} {:>7} {:>9} {:>8} {:>8} {:>9}  {:<18} {:>10} {}\n", "option", "ΔT [ms]", "loop [s]", "× loop", "× all", "error",
              "largest in", "no maxima", "Pareto");
